@@ -1,0 +1,228 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "particleGenerator.H"
+#include "particleShape.H"
+#include "neighbourList.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::particleGenerator::checkOverlaps(mpsCloud& cloud) const
+{
+    const label n = cloud.size();
+    if (n == 0)
+    {
+        return;
+    }
+
+    const UList<scalar>& spacing = cloud.spacing();
+    const UList<label>& region = cloud.region();
+    const UList<particleKind>& kind = cloud.kind();
+    const scalar maxSpacing = max(scalarField(spacing));
+
+    const neighbourList nbrs(cloud.x(), 0.5*maxSpacing);
+    const dictionary& regionsDict = dict_.subDict("regions");
+
+    List<bool> keep(n, true);
+    labelList nDropped(cloud.regionNames().size(), Zero);
+
+    for (label i = 0; i < n; ++i)
+    {
+        if (!keep[i])
+        {
+            continue;
+        }
+        for (const label j : nbrs[i])
+        {
+            if (j < i || !keep[j])
+            {
+                continue;
+            }
+            const scalar d = mag(cloud.x()[j] - cloud.x()[i]);
+            if (d >= 0.5*min(spacing[i], spacing[j]))
+            {
+                continue;
+            }
+            if (kind[i] == kind[j] || region[i] == region[j])
+            {
+                // Particles are appended region by region: j is the later
+                keep[j] = false;
+                ++nDropped[region[j]];
+            }
+            else
+            {
+                const word& ri = cloud.regionNames()[region[i]];
+                const word& rj = cloud.regionNames()[region[j]];
+                FatalIOErrorInFunction(regionsDict.subDict(rj))
+                    << "Regions '" << ri << "' ("
+                    << particleKindNames[kind[i]] << ") and '" << rj
+                    << "' (" << particleKindNames[kind[j]]
+                    << ") overlap near " << cloud.x()[i] << ": particles "
+                    << d << " apart, closer than half their spacing."
+                    << nl << "Regions of different kinds must not overlap."
+                    << exit(FatalIOError);
+            }
+        }
+    }
+
+    forAll(nDropped, regioni)
+    {
+        if (nDropped[regioni])
+        {
+            Info<< "    region " << cloud.regionNames()[regioni]
+                << ": dropped " << nDropped[regioni]
+                << " particles coinciding with earlier ones" << nl;
+        }
+    }
+
+    cloud.subset(keep);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleGenerator::particleGenerator
+(
+    const dictionary& particleDict,
+    const scalar fluidSpacing,
+    const scalar structureSpacing
+)
+:
+    dict_(particleDict),
+    fluidSpacing_(fluidSpacing),
+    structureSpacing_(structureSpacing)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::particleGenerator::generate
+(
+    mpsCloud& cloud,
+    const boundBox& domain
+) const
+{
+    cloud.clear();
+
+    const dictionary& regionsDict = dict_.subDict("regions");
+    if (regionsDict.empty())
+    {
+        FatalIOErrorInFunction(regionsDict)
+            << "No regions: add one sub-dictionary per region of particles"
+            << exit(FatalIOError);
+    }
+
+    const scalar tol = 1e-9*mag(domain.span());
+
+    for (const entry& e : regionsDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(regionsDict)
+                << "Entry '" << e.keyword() << "' in 'regions' is not a"
+                << " dictionary: each region is { type ...; kind ...; }"
+                << exit(FatalIOError);
+        }
+        const word& name = e.keyword();
+        const dictionary& rDict = e.dict();
+
+        const particleKind kind = particleKindNames.get("kind", rDict);
+
+        const scalar spacing = rDict.getOrDefault<scalar>
+        (
+            "spacing",
+            kind == particleKind::structure
+          ? structureSpacing_
+          : fluidSpacing_
+        );
+        if (!(spacing > 0))
+        {
+            FatalIOErrorInFunction(rDict)
+                << "Entry 'spacing' of region " << name
+                << " must be positive, got " << spacing
+                << exit(FatalIOError);
+        }
+
+        autoPtr<particleShape> shape(particleShape::New(rDict));
+
+        const label nLayers = shape->nLayers(spacing);
+        label dummyLayers = 0;
+        if (rDict.found("dummyLayers"))
+        {
+            dummyLayers = rDict.get<label>("dummyLayers");
+            if (kind != particleKind::wall)
+            {
+                FatalIOErrorInFunction(rDict)
+                    << "Entry 'dummyLayers' is for wall regions; region "
+                    << name << " is " << particleKindNames[kind]
+                    << exit(FatalIOError);
+            }
+            if (dummyLayers < 0 || dummyLayers >= nLayers)
+            {
+                FatalIOErrorInFunction(rDict)
+                    << "Entry 'dummyLayers' of region " << name << " is "
+                    << dummyLayers << "; valid: 0 to " << nLayers - 1
+                    << " (the region has " << nLayers << " layers)"
+                    << exit(FatalIOError);
+            }
+        }
+
+        DynamicList<vector2D> points;
+        DynamicList<label> layers;
+        shape->generate(spacing, points, layers);
+
+        if (points.empty())
+        {
+            FatalIOErrorInFunction(rDict)
+                << "Region " << name << " has no particles: is the shape"
+                << " smaller than the spacing " << spacing << '?'
+                << exit(FatalIOError);
+        }
+
+        const label regioni = cloud.addRegion(name);
+        const label firstDummyLayer = nLayers - dummyLayers;
+
+        forAll(points, i)
+        {
+            const vector2D& p = points[i];
+            if
+            (
+                p.x() < domain.min().x() - tol
+             || p.x() > domain.max().x() + tol
+             || p.y() < domain.min().y() - tol
+             || p.y() > domain.max().y() + tol
+            )
+            {
+                FatalIOErrorInFunction(rDict)
+                    << "Region " << name << " has particles outside the"
+                    << " domain, the first at " << p << "." << nl
+                    << "The domain is the background mesh (blockMesh) from "
+                    << domain.min() << " to " << domain.max()
+                    << "; it must hold every particle, dummies included."
+                    << exit(FatalIOError);
+            }
+
+            const particleKind k =
+                (layers[i] >= firstDummyLayer && dummyLayers > 0)
+              ? particleKind::dummy
+              : kind;
+
+            cloud.append(p, k, regioni, spacing);
+        }
+    }
+
+    checkOverlaps(cloud);
+}
+
+
+// ************************************************************************* //

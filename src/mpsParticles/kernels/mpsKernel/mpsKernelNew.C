@@ -1,0 +1,43 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "mpsKernel.H"
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::mpsKernel> Foam::mpsKernel::New
+(
+    const dictionary& dict,
+    const scalar re
+)
+{
+    const word modelType(dict.get<word>("kernel"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "kernel",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<mpsKernel>(cstrIter()(dict, re));
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

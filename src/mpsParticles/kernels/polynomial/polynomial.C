@@ -1,0 +1,50 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "polynomial.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace mpsKernels
+{
+    defineTypeNameAndDebug(polynomial, 0);
+    addToRunTimeSelectionTable(mpsKernel, polynomial, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::mpsKernels::polynomial::polynomial(const dictionary& dict, const scalar re)
+:
+    mpsKernel(dict, re)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::mpsKernels::polynomial::w(const scalar r) const
+{
+    if (r >= re_)
+    {
+        return 0;
+    }
+    const scalar s = 1 - r/re_;
+    return s*s*s;
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

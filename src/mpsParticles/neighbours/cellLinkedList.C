@@ -1,0 +1,122 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "cellLinkedList.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cellLinkedList::cellLinkedList()
+:
+    h_(1),
+    origin_(vector2D::zero),
+    nx_(0),
+    ny_(0),
+    cellStart_(1, Zero),
+    order_(),
+    sorted_(),
+    cellOfPoint_(),
+    fill_()
+{}
+
+
+Foam::cellLinkedList::cellLinkedList
+(
+    const UList<vector2D>& x,
+    const scalar cellSize
+)
+:
+    cellLinkedList()
+{
+    build(x, cellSize);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cellLinkedList::build
+(
+    const UList<vector2D>& x,
+    const scalar cellSize
+)
+{
+    if (!(cellSize > 0))
+    {
+        FatalErrorInFunction
+            << "Cell size must be positive, got " << cellSize
+            << exit(FatalError);
+    }
+
+    h_ = cellSize;
+
+    vector2D lo(GREAT, GREAT);
+    vector2D hi(-GREAT, -GREAT);
+    for (const vector2D& p : x)
+    {
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+    if (x.empty())
+    {
+        lo = hi = vector2D::zero;
+    }
+
+    origin_ = lo;
+    nx_ = label((hi.x() - lo.x())/h_) + 1;
+    ny_ = label((hi.y() - lo.y())/h_) + 1;
+
+    const label nCells = nx_*ny_;
+    if (nCells > 100*x.size() + 1000000)
+    {
+        FatalErrorInFunction
+            << "Cell-linked list of " << nx_ << " x " << ny_
+            << " cells for " << x.size() << " points: are the points spread"
+            << " over " << hi - lo << " with a cell size of " << h_ << '?'
+            << exit(FatalError);
+    }
+
+    // Counting sort of the points by cell
+    labelList& cellOfPoint = cellOfPoint_;
+    cellOfPoint.setSize(x.size());
+    cellStart_.setSize(nCells + 1);
+    cellStart_ = 0;
+
+    forAll(x, i)
+    {
+        label ix, iy;
+        cellOf(x[i], ix, iy);
+        cellOfPoint[i] = iy*nx_ + ix;
+        ++cellStart_[cellOfPoint[i] + 1];
+    }
+    for (label c = 0; c < nCells; ++c)
+    {
+        cellStart_[c + 1] += cellStart_[c];
+    }
+
+    order_.setSize(x.size());
+    labelList& fill = fill_;
+    fill = SubList<label>(cellStart_, nCells);
+    forAll(x, i)
+    {
+        order_[fill[cellOfPoint[i]]++] = i;
+    }
+
+    sorted_.setSize(x.size());
+    forAll(order_, k)
+    {
+        sorted_[k] = x[order_[k]];
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,165 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "neighbourList.H"
+#include "DynamicList.H"
+#include "mathematicalConstants.H"
+#include <omp.h>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::neighbourList::neighbourList()
+:
+    radius_(0),
+    offsets_(1, Zero),
+    neighbours_(),
+    cells_(),
+    buffers_()
+{}
+
+
+Foam::neighbourList::neighbourList
+(
+    const UList<vector2D>& x,
+    const scalar radius
+)
+:
+    neighbourList()
+{
+    build(x, radius);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::neighbourList::build
+(
+    const UList<vector2D>& x,
+    const scalar radius
+)
+{
+    cells_.build(x, radius);
+    build(x, cells_, radius);
+}
+
+
+void Foam::neighbourList::build
+(
+    const UList<vector2D>& x,
+    const cellLinkedList& cells,
+    const scalar radius
+)
+{
+    radius_ = radius;
+    const label nPoints = x.size();
+    const scalar r2 = radius*radius;
+
+    // Cells to visit on each side: radius may exceed the cell size
+    const label reach = label(std::ceil(radius/cells.cellSize() - SMALL));
+    const labelList& order = cells.order();
+    const List<vector2D>& sorted = cells.sorted();
+
+    offsets_.setSize(nPoints + 1);
+    offsets_[0] = 0;
+
+    const label nThreads = omp_get_max_threads();
+    if (buffers_.size() < nThreads)
+    {
+        buffers_.setSize(nThreads);
+    }
+    labelList blockStart(nThreads + 1);
+
+    // Expected neighbours per point: the points' mean density times the
+    // area of the search circle
+    const scalar area =
+        max(scalar(cells.nx()*cells.ny()), scalar(1))*sqr(cells.cellSize());
+    const label nExpected =
+        label(1.3*constant::mathematical::pi*r2*nPoints/area) + 8;
+
+    #pragma omp parallel num_threads(nThreads)
+    {
+        const label t = omp_get_thread_num();
+        const label nt = omp_get_num_threads();
+        const label first = (nPoints*t)/nt;
+        const label last = (nPoints*(t + 1))/nt;
+
+        // Work on a thread-local list (its size is written at every append:
+        // in buffers_ the lists of two threads would share a cache line)
+        DynamicList<label> nbrs;
+        nbrs.transfer(buffers_[t]);
+        nbrs.clear();
+        nbrs.reserve(nExpected*(last - first));
+
+        for (label i = first; i < last; ++i)
+        {
+            const vector2D& xi = x[i];
+            label ix, iy;
+            cells.cellOf(xi, ix, iy);
+
+            const label jx0 = max(ix - reach, label(0));
+            const label jx1 = min(ix + reach, cells.nx() - 1);
+            const label jy0 = max(iy - reach, label(0));
+            const label jy1 = min(iy + reach, cells.ny() - 1);
+
+            for (label jy = jy0; jy <= jy1; ++jy)
+            {
+                // Cells of one row are contiguous in order()
+                const label kEnd = cells.cellEnd(jx1, jy);
+                for (label k = cells.cellBegin(jx0, jy); k < kEnd; ++k)
+                {
+                    const scalar dx = sorted[k].x() - xi.x();
+                    const scalar dy = sorted[k].y() - xi.y();
+                    if (dx*dx + dy*dy < r2 && order[k] != i)
+                    {
+                        nbrs.append(order[k]);
+                    }
+                }
+            }
+            offsets_[i + 1] = nbrs.size();
+        }
+
+        const label nOwn = nbrs.size();
+        buffers_[t].transfer(nbrs);
+
+        #pragma omp barrier
+        #pragma omp single
+        {
+            blockStart[0] = 0;
+            for (label b = 0; b < nt; ++b)
+            {
+                blockStart[b + 1] = blockStart[b] + buffers_[b].size();
+            }
+            for (label b = nt; b < nThreads; ++b)
+            {
+                blockStart[b + 1] = blockStart[b];
+            }
+            neighbours_.setSize(blockStart[nThreads]);
+        }
+
+        // Shift this block's offsets and copy its neighbours in place
+        const label shift = blockStart[t];
+        for (label i = first; i < last; ++i)
+        {
+            offsets_[i + 1] += shift;
+        }
+        std::copy
+        (
+            buffers_[t].cbegin(),
+            buffers_[t].cbegin() + nOwn,
+            neighbours_.begin() + shift
+        );
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,124 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "lagrangianCloudWriter.H"
+#include "cloud.H"
+#include "IOField.H"
+#include "IOdictionary.H"
+#include "OFstream.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+template<class Type>
+static void writeFields
+(
+    const objectRegistry& db,
+    const fileName& local,
+    const HashTable<Field<Type>>& fields
+)
+{
+    forAllConstIters(fields, iter)
+    {
+        IOField<Type> fld
+        (
+            IOobject
+            (
+                iter.key(),
+                db.time().timeName(),
+                local,
+                db,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            iter.val()
+        );
+        fld.write();
+    }
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::lagrangianCloudWriter::lagrangianCloudWriter(const polyMesh& mesh)
+:
+    mesh_(mesh)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::lagrangianCloudWriter::write(const cloudFields& cloud) const
+{
+    const Time& runTime = mesh_.time();
+    const fileName local(cloud::prefix/cloud.name());
+
+    // positions: "(x y z) celli", always ASCII so every reader parses it
+    {
+        IOobject io
+        (
+            "positions",
+            runTime.timeName(),
+            local,
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+        mkDir(io.path());
+        OFstream os(io.objectPath());
+        io.writeHeader(os, "Cloud<passiveParticle>");
+
+        const pointField& x = cloud.positions();
+        os  << x.size() << nl << token::BEGIN_LIST << nl;
+        for (const point& p : x)
+        {
+            os  << p << token::SPACE << mesh_.findCell(p) << nl;
+        }
+        os  << token::END_LIST << nl;
+        IOobject::writeEndDivider(os);
+    }
+
+    writeFields(mesh_, local, cloud.vectorFields());
+    writeFields(mesh_, local, cloud.scalarFields());
+    writeFields(mesh_, local, cloud.labelFields());
+
+    // uniform/lagrangian/<cloud>/cloudProperties
+    IOdictionary props
+    (
+        IOobject
+        (
+            "cloudProperties",
+            runTime.timeName(),
+            "uniform"/local,
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    props.add("geometry", word("positions"));
+    dictionary procDict;
+    procDict.add("particleCount", cloud.size());
+    props.add("processor0", procDict);
+    props.regIOobject::write();
+}
+
+
+// ************************************************************************* //

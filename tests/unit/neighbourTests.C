@@ -1,0 +1,129 @@
+/*---------------------------------------------------------------------------*\
+    Neighbour search: the cell-linked list neighbour lists against a brute
+    force O(N^2) search on random particles (same sets), for a radius equal
+    to, smaller and larger than the cell size, and for 1 and 2 threads.
+\*---------------------------------------------------------------------------*/
+
+#include <catch2/catch.hpp>
+#include "neighbourList.H"
+#include "Random.H"
+#include <omp.h>
+#include <algorithm>
+
+using namespace Foam;
+
+namespace
+{
+
+List<vector2D> randomPoints(const label n, const vector2D& span, label seed)
+{
+    Random rnd(seed);
+    List<vector2D> x(n);
+    for (vector2D& p : x)
+    {
+        p = vector2D(span.x()*rnd.sample01<scalar>(), span.y()*rnd.sample01<scalar>());
+    }
+    return x;
+}
+
+List<labelList> bruteForce(const UList<vector2D>& x, const scalar radius)
+{
+    List<labelList> nbrs(x.size());
+    forAll(x, i)
+    {
+        DynamicList<label> ni;
+        forAll(x, j)
+        {
+            if (j != i && magSqr(x[j] - x[i]) < sqr(radius))
+            {
+                ni.append(j);
+            }
+        }
+        nbrs[i] = std::move(ni);
+    }
+    return nbrs;
+}
+
+//- Number of points whose neighbour set differs from the brute force one
+label nDifferent(const neighbourList& list, const List<labelList>& ref)
+{
+    label nDiff = (list.size() == ref.size() ? 0 : 1);
+    for (label i = 0; i < min(list.size(), ref.size()); ++i)
+    {
+        labelList a(list[i]);
+        std::sort(a.begin(), a.end());
+        if (a != ref[i])
+        {
+            ++nDiff;
+        }
+    }
+    return nDiff;
+}
+
+} // End anonymous namespace
+
+
+TEST_CASE("neighbour lists equal brute force on random particles")
+{
+    // 3000 points in a 1 x 0.5 box; with radius 0.03 about 8 neighbours each
+    const List<vector2D> x(randomPoints(3000, vector2D(1, 0.5), 1234));
+
+    for (const scalar radius : {0.01, 0.03, 0.07})
+    {
+        INFO("radius " << radius);
+        const List<labelList> ref(bruteForce(x, radius));
+
+        label nRefPairs = 0;
+        for (const labelList& r : ref)
+        {
+            nRefPairs += r.size();
+        }
+        REQUIRE(nRefPairs > x.size());     // the test is not vacuous
+
+        const neighbourList list(x, radius);
+        CHECK(list.nPairs() == nRefPairs);
+        CHECK(nDifferent(list, ref) == 0);
+
+        // Radius larger and smaller than the cell size
+        for (const scalar h : {0.4*radius, 2.5*radius})
+        {
+            INFO("cell size " << h);
+            neighbourList other;
+            other.build(x, cellLinkedList(x, h), radius);
+            CHECK(nDifferent(other, ref) == 0);
+        }
+    }
+}
+
+
+TEST_CASE("neighbour lists do not depend on the number of threads")
+{
+    const List<vector2D> x(randomPoints(20000, vector2D(2, 1), 99));
+    const label nThreads = omp_get_max_threads();
+
+    omp_set_num_threads(1);
+    const neighbourList one(x, 0.02);
+    omp_set_num_threads(max(label(2), nThreads));
+    const neighbourList many(x, 0.02);
+    omp_set_num_threads(nThreads);
+
+    CHECK(one.offsets() == many.offsets());
+    CHECK(one.neighbours() == many.neighbours());
+}
+
+
+TEST_CASE("neighbour lists on a lattice count the stencil")
+{
+    // Interior points of a square lattice with radius 2.1 l0 have 12
+    // neighbours (4 at l0, 4 at sqrt(2) l0, 4 at 2 l0)
+    const scalar l0 = 0.005;
+    List<vector2D> x(30*30);
+    forAll(x, i)
+    {
+        x[i] = l0*vector2D(i % 30, i / 30);
+    }
+    const neighbourList list(x, 2.1*l0);
+    const label interior = 15*30 + 15;
+    CHECK(list[interior].size() == 12);
+    CHECK(list[0].size() == 5);         // a corner: 2 + 1 + 2
+}
