@@ -136,7 +136,15 @@ void Foam::particleGenerator::generate
         const word& name = e.keyword();
         const dictionary& rDict = e.dict();
 
-        const particleKind kind = particleKindNames.get("kind", rDict);
+        const word kindName(rDict.get<word>("kind"));
+        if (!particleKindNames.found(kindName))
+        {
+            FatalIOErrorInFunction(rDict)
+                << "Entry 'kind' of region " << name << " is " << kindName
+                << "; valid kinds: " << flatOutput(particleKindNames.names())
+                << exit(FatalIOError);
+        }
+        const particleKind kind = particleKindNames[kindName];
 
         const scalar spacing = rDict.getOrDefault<scalar>
         (
