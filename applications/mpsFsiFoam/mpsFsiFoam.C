@@ -23,9 +23,15 @@ Description
     wall particles and the structure's interface layer.
 
     Reads system/controlDict, system/particleDict, constant/mpsProperties and
-    (where present) constant/structureProperties; builds the particles,
-    reports them and writes the start time as lagrangian clouds fluid, wall
-    and structure, and as VTK/<cloud>_<n>.vtp with VTK/<cloud>.pvd.
+    (where present) constant/structureProperties; builds the particles (or
+    reads them back at the start time of a restart) and advances the fluid
+    with the semi-implicit MPS step (mpsFluid). Writes at write times the
+    lagrangian clouds fluid, wall and structure, and VTK/<cloud>_<n>.vtp with
+    VTK/<cloud>.pvd. A step whose pressure or velocity is not finite stops
+    the run with a message; the last written time stays as it was.
+
+    controlDict: the usual time controls; adjustTimeStep (default no) with
+    maxCo (default 0.2, Courant number |u| dt/l0) and maxDeltaT.
 
 \*---------------------------------------------------------------------------*/
 
@@ -35,6 +41,11 @@ Description
 #include "particleGenerator.H"
 #include "neighbourList.H"
 #include "mpsCloudOutput.H"
+#include "lagrangianCloudReader.H"
+#include "mpsFluid.H"
+#include "mpsState.H"
+#include "clockValue.H"
+#include <fenv.h>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -49,72 +60,97 @@ int main(int argc, char *argv[])
 
     #include "setRootCaseLists.H"
     #include "createTime.H"
+
+    // The solver checks every step for values that are not finite and stops
+    // with a message naming the step: floating-point traps would abort it
+    // earlier, without saying where
+    fedisableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+    Info<< "Floating-point traps off: every step is checked for values that"
+        << " are not finite" << nl << endl;
+
     #include "createMesh.H"
     #include "createFields.H"
+    #include "reportParticles.H"
 
-    // Number density of every particle with the number-density kernel
-    {
-        const neighbourList nbrs(cloud.x(), kernel->re());
-        UList<scalar>& n = cloud.n();
-        const UList<vector2D>& x = cloud.x();
-
-        #pragma omp parallel for schedule(static)
-        for (label i = 0; i < cloud.size(); ++i)
-        {
-            scalar ni = 0;
-            for (const label j : nbrs[i])
-            {
-                ni += kernel->w(mag(x[j] - x[i]));
-            }
-            n[i] = ni;
-        }
-    }
-
-    Info<< "Particles:" << nl;
-    for (const word& kindName : particleKindNames.names())
-    {
-        Info<< "    " << kindName << ": "
-            << cloud.count(particleKindNames[kindName]) << nl;
-    }
-    Info<< "    total: " << cloud.size() << nl
-        << "Regions:" << nl;
-    {
-        labelList regionCount(cloud.regionNames().size(), Zero);
-        for (const label r : cloud.region())
-        {
-            ++regionCount[r];
-        }
-        forAll(regionCount, r)
-        {
-            Info<< "    " << cloud.regionNames()[r] << ": "
-                << regionCount[r] << nl;
-        }
-    }
-
-    const scalar n0 = kernel->latticeNumberDensity(l0);
-    const scalar lambda0 = kernel->latticeLambda(l0);
-    scalar nMax = 0;
-    forAll(cloud.kind(), i)
-    {
-        if (cloud.kind()[i] == particleKind::fluid)
-        {
-            nMax = max(nMax, cloud.n()[i]);
-        }
-    }
-    Info<< "Kernel " << kernel->type() << ", re = " << kernel->re()
-        << " (" << kernel->re()/l0 << " l0)" << nl
-        << "    n0 = " << n0 << nl
-        << "    lambda0 = " << lambda0 << " (" << lambda0/sqr(l0)
-        << " l0^2)" << nl
-        << "    largest fluid number density = " << nMax
-        << " (n/n0 = " << nMax/n0 << ")" << nl << endl;
-
-    Info<< "Writing time " << runTime.timeName() << endl;
     mpsCloudOutput output(mesh);
-    output.write(cloud);
 
-    Info<< "The fluid and structure physics come in later versions:"
-        << " this run wrote the initial particles only." << nl;
+    if (restart)
+    {
+        Info<< "Continuing from time " << runTime.timeName() << nl << endl;
+    }
+    else
+    {
+        Info<< "Writing time " << runTime.timeName() << nl << endl;
+        output.write(cloud);
+    }
+
+    const bool adjustTimeStep =
+        runTime.controlDict().getOrDefault("adjustTimeStep", false);
+    const scalar maxCo = runTime.controlDict().getOrDefault<scalar>("maxCo", 0.2);
+    const scalar maxDeltaT =
+        runTime.controlDict().getOrDefault<scalar>("maxDeltaT", GREAT);
+
+    Info<< "Starting time loop" << nl << endl;
+
+    clockValue wallClock(true);
+    label stepi = 0;
+    word lastWritten(runTime.timeName());
+
+    while (runTime.run())
+    {
+        ++runTime;
+        ++stepi;
+        const scalar dt = runTime.deltaTValue();
+
+        const label nFluidBefore = cloud.count(particleKind::fluid);
+        const mpsFluid::stepInfo& info = fluid.step(dt);
+
+        #include "checkDivergence.H"
+
+        if (!info.ppeConverged)
+        {
+            WarningInFunction
+                << "Time " << runTime.timeName() << ", step " << stepi
+                << ": the pressure solver did not reach its tolerance "
+                << fluid.solver().tolerance() << " in " << info.ppeIterations
+                << " iterations (relative residual " << info.ppeResidual
+                << ")" << endl;
+        }
+
+        const scalar Co = info.maxSpeed*dt/fluid.l0();
+
+        runTime.write();
+        if (runTime.writeTime())
+        {
+            output.write(cloud);
+            lastWritten = runTime.timeName();
+        }
+
+        if (runTime.writeTime() || stepi % 100 == 0)
+        {
+            Info<< "Time = " << runTime.timeName()
+                << "  step " << stepi
+                << "  PPE " << info.ppeIterations << " it, residual "
+                << info.ppeResidual
+                << "  surface " << info.nSurface
+                << "  Co " << Co
+                << "  wall " << wallClock.elapsed() << " s"
+                << (runTime.writeTime() ? "  (written)" : "") << endl;
+        }
+
+        if (adjustTimeStep)
+        {
+            const scalar dtCo =
+                info.maxSpeed > SMALL ? maxCo*fluid.l0()/info.maxSpeed : GREAT;
+            runTime.setDeltaT(min(min(dtCo, 1.2*dt), maxDeltaT));
+        }
+    }
+
+    const mpsFluid::stepInfo& info = fluid.info();
+    Info<< nl << "Time split: neighbours " << info.timeNeighbours
+        << " s, PPE assembly " << info.timeAssembly
+        << " s, PPE solve " << info.timeSolve
+        << " s, rest " << info.timeRest << " s" << nl;
 
     runTime.printExecutionTime(Info);
 

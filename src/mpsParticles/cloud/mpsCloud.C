@@ -72,6 +72,8 @@ void Foam::mpsCloud::append
     kind_.append(k);
     region_.append(regioni);
     spacing_.append(spacing);
+    id_.append(id_.size());
+    surface_.append(false);
 }
 
 
@@ -89,6 +91,8 @@ void Foam::mpsCloud::subset(const UList<bool>& keep)
             kind_[j] = kind_[i];
             region_[j] = region_[i];
             spacing_[j] = spacing_[i];
+            id_[j] = id_[i];
+            surface_[j] = surface_[i];
             ++j;
         }
     }
@@ -99,6 +103,8 @@ void Foam::mpsCloud::subset(const UList<bool>& keep)
     kind_.resize(j);
     region_.resize(j);
     spacing_.resize(j);
+    id_.resize(j);
+    surface_.resize(j);
 }
 
 
@@ -111,6 +117,8 @@ void Foam::mpsCloud::clear()
     kind_.clear();
     region_.clear();
     spacing_.clear();
+    id_.clear();
+    surface_.clear();
     regionNames_.clear();
 }
 

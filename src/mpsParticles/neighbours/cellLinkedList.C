@@ -72,18 +72,22 @@ void Foam::cellLinkedList::build
     }
 
     origin_ = lo;
-    nx_ = label((hi.x() - lo.x())/h_) + 1;
-    ny_ = label((hi.y() - lo.y())/h_) + 1;
 
-    const label nCells = nx_*ny_;
-    if (nCells > 100*x.size() + 1000000)
+    // Count the cells in floating point first: far-flung points would
+    // overflow a label
+    const scalar nxs = std::floor((hi.x() - lo.x())/h_) + 1;
+    const scalar nys = std::floor((hi.y() - lo.y())/h_) + 1;
+    if (!(nxs*nys <= 100.0*x.size() + 1e6))
     {
         FatalErrorInFunction
-            << "Cell-linked list of " << nx_ << " x " << ny_
+            << "Cell-linked list of " << nxs << " x " << nys
             << " cells for " << x.size() << " points: are the points spread"
             << " over " << hi - lo << " with a cell size of " << h_ << '?'
             << exit(FatalError);
     }
+    nx_ = label(nxs);
+    ny_ = label(nys);
+    const label nCells = nx_*ny_;
 
     // Counting sort of the points by cell
     labelList& cellOfPoint = cellOfPoint_;

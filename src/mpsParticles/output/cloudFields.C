@@ -32,6 +32,8 @@ Foam::cloudFields::cloudFields
     scalarField nd(n);
     labelField kind(n);
     labelField region(n);
+    labelField surface(n);
+    labelField id(n);
 
     forAll(ids_, k)
     {
@@ -44,6 +46,8 @@ Foam::cloudFields::cloudFields
         nd[k] = cloud.n()[i];
         kind[k] = static_cast<label>(cloud.kind()[i]);
         region[k] = cloud.region()[i];
+        surface[k] = cloud.surface()[i];
+        id[k] = cloud.id()[i];
     }
 
     vectorFields_.insert("U", std::move(U));
@@ -51,6 +55,8 @@ Foam::cloudFields::cloudFields
     scalarFields_.insert("n", std::move(nd));
     labelFields_.insert("kind", std::move(kind));
     labelFields_.insert("region", std::move(region));
+    labelFields_.insert("freeSurface", std::move(surface));
+    labelFields_.insert("id", std::move(id));
 }
 
 

@@ -80,7 +80,7 @@ void Foam::vtkCloudWriter::readSeries(const word& cloudName)
         if (std::regex_search(line, m, entryRe))
         {
             const scalar t = std::stod(m[1].str());
-            if (t < startTime - 0.5*runTime_.deltaTValue())
+            if (t < startTime + 0.5*runTime_.deltaTValue())
             {
                 entries.append(Tuple2<scalar, word>(t, word(m[2].str())));
             }

@@ -78,5 +78,23 @@ Foam::scalar Foam::mpsKernel::latticeLambda(const scalar l0) const
     return sumR2W/sumW;
 }
 
+Foam::scalar Foam::mpsKernel::latticeSurfaceAsymmetry(const scalar l0) const
+{
+    const label m = label(re_/l0) + 1;
+    scalar Fy = 0;
+    for (label i = -m; i <= m; ++i)
+    {
+        for (label j = -m; j <= 0; ++j)
+        {
+            if (i || j)
+            {
+                const scalar r = l0*::hypot(scalar(i), scalar(j));
+                Fy += (-j*l0/r)*w(r);
+            }
+        }
+    }
+    return 2*Fy/latticeNumberDensity(l0);
+}
+
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

@@ -1,0 +1,114 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "pairwise.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace collisionModels
+{
+    defineTypeNameAndDebug(pairwise, 0);
+    addToRunTimeSelectionTable(collisionModel, pairwise, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::collisionModels::pairwise::pairwise(const dictionary& dict)
+:
+    collisionModel(dict),
+    alpha_(dict.getOrDefault<scalar>("alpha", 0.85)),
+    e_(dict.getOrDefault<scalar>("e", 0.2))
+{
+    if (!(alpha_ > 0 && alpha_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'alpha' (collision distance / l0) must lie in (0, 1),"
+            << " got " << alpha_ << exit(FatalIOError);
+    }
+    if (!(e_ >= 0 && e_ <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'e' (restitution coefficient) must lie in [0, 1], got "
+            << e_ << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::collisionModels::pairwise::correct
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const scalar l0,
+    const scalar dt,
+    UList<vector2D>& x,
+    UList<vector2D>& U
+) const
+{
+    const UList<particleKind>& kind = cloud.kind();
+    const labelList& offsets = nbrs.offsets();
+    const labelList& nbr = nbrs.neighbours();
+    const scalar d2 = sqr(alpha_*l0);
+    const label n = cloud.size();
+
+    List<vector2D> dU(n, Zero);
+    label nPairs = 0;
+
+    #pragma omp parallel for schedule(static) reduction(+:nPairs)
+    for (label i = 0; i < n; ++i)
+    {
+        if (kind[i] != particleKind::fluid)
+        {
+            continue;
+        }
+        vector2D dUi(Zero);
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            const vector2D r(x[j] - x[i]);
+            const scalar r2 = magSqr(r);
+            if (r2 >= d2 || r2 < VSMALL)
+            {
+                continue;
+            }
+            const scalar approach = ((U[i] - U[j]) & r);
+            if (approach <= 0)
+            {
+                continue;
+            }
+            const scalar massFactor =
+                (kind[j] == particleKind::fluid ? 0.5 : 1.0);
+            dUi -= ((1 + e_)*massFactor*approach/r2)*r;
+            ++nPairs;
+        }
+        dU[i] = dUi;
+    }
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        U[i] += dU[i];
+        x[i] += dt*dU[i];
+    }
+
+    return nPairs;
+}
+
+
+// ************************************************************************* //

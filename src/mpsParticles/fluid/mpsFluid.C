@@ -1,0 +1,502 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "mpsFluid.H"
+#include "clockValue.H"
+#include <omp.h>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::mpsFluid::sourceType> Foam::mpsFluid::sourceTypeNames
+({
+    { sourceType::numberDensity, "numberDensity" },
+    { sourceType::mixed, "mixed" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::mpsFluid::readPositive
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar value = dict.get<scalar>(key);
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' must be positive, got " << value
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+void Foam::mpsFluid::updateNeighbours()
+{
+    const scalar radius = max(kN_->re(), max(kG_->re(), kL_->re()));
+    nbrs_.build(cloud_.x(), radius);
+
+    const UList<vector2D>& x = cloud_.x();
+    const labelList& offsets = nbrs_.offsets();
+    const labelList& nbr = nbrs_.neighbours();
+    const label nPairs = nbrs_.nPairs();
+    wN_.setSize(nPairs);
+    wG_.setSize(nPairs);
+    wL_.setSize(nPairs);
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < cloud_.size(); ++i)
+    {
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            const scalar r = max(mag(x[nbr[k]] - x[i]), minR_);
+            wN_[k] = kN_->w(r);
+            wG_[k] = kG_->w(r);
+            wL_[k] = kL_->w(r);
+        }
+    }
+}
+
+
+void Foam::mpsFluid::updateNumberDensity()
+{
+    UList<scalar>& n = cloud_.n();
+    const labelList& offsets = nbrs_.offsets();
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < cloud_.size(); ++i)
+    {
+        scalar ni = 0;
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            ni += wN_[k];
+        }
+        n[i] = ni;
+    }
+}
+
+
+void Foam::mpsFluid::predict(const scalar dt)
+{
+    UList<vector2D>& x = cloud_.x();
+    UList<vector2D>& U = cloud_.U();
+    const UList<particleKind>& kind = cloud_.kind();
+
+    nbrsV_.build(x, kV_->re());
+    const labelList& offsets = nbrsV_.offsets();
+    const labelList& nbr = nbrsV_.neighbours();
+    const scalar coeff = nu_*2*2/(lambdaV_*n0V_);
+    const label n = cloud_.size();
+
+    // Viscous acceleration from the velocities at the start of the step
+    List<vector2D> acc(n, Zero);
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        if (kind[i] != particleKind::fluid)
+        {
+            continue;
+        }
+        vector2D lapU(Zero);
+        if (nu_ > 0)
+        {
+            for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+            {
+                const label j = nbr[k];
+                lapU += kV_->w(max(mag(x[j] - x[i]), minR_))*(U[j] - U[i]);
+            }
+        }
+        acc[i] = coeff*lapU + g_;
+    }
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        if (kind[i] == particleKind::fluid)
+        {
+            U[i] += dt*acc[i];
+            x[i] += dt*U[i];
+        }
+    }
+}
+
+
+void Foam::mpsFluid::solvePressure(const scalar dt)
+{
+    const UList<vector2D>& x = cloud_.x();
+    const UList<vector2D>& U = cloud_.U();
+    const UList<scalar>& n = cloud_.n();
+    const UList<bool>& surface = cloud_.surface();
+    const UList<particleKind>& kind = cloud_.kind();
+    UList<scalar>& p = cloud_.p();
+    const labelList& offsets = nbrs_.offsets();
+    const labelList& nbr = nbrs_.neighbours();
+    const label nPart = cloud_.size();
+
+    // Unknowns: fluid and wall particles off the surface
+    unknown_.setSize(nPart);
+    label nUnknowns = 0;
+    for (label i = 0; i < nPart; ++i)
+    {
+        const bool solved =
+            (kind[i] == particleKind::fluid || kind[i] == particleKind::wall)
+         && !surface[i];
+        unknown_[i] = solved ? nUnknowns++ : -1;
+        if (!solved)
+        {
+            p[i] = 0;
+        }
+    }
+    info_.nUnknowns = nUnknowns;
+
+    // Rows: -<lap p>_i + (alpha rho/dt^2) p_i = -RHS_i (positive definite)
+    const scalar lapCoeff = 2*2/(lambdaL_*n0L_);
+    const scalar divCoeff = 2/n0N_;
+    const scalar diagComp = compressibility_*rho_/sqr(dt);
+
+    Eigen::VectorXd b(nUnknowns);
+    Eigen::VectorXd sol(nUnknowns);
+    ppeMatrix A(nUnknowns, nUnknowns);
+    Eigen::VectorXi rowNnz(nUnknowns);
+    for (label i = 0; i < nPart; ++i)
+    {
+        const label row = unknown_[i];
+        if (row >= 0)
+        {
+            rowNnz[row] = offsets[i + 1] - offsets[i] + 1;
+        }
+    }
+    A.reserve(rowNnz);
+
+    for (label i = 0; i < nPart; ++i)
+    {
+        const label row = unknown_[i];
+        if (row < 0)
+        {
+            continue;
+        }
+
+        scalar diag = diagComp;
+        scalar div = 0;
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            if (kind[j] == particleKind::dummy)
+            {
+                continue;
+            }
+            const scalar a = lapCoeff*wL_[k];
+            diag += a;
+            if (unknown_[j] >= 0)
+            {
+                A.insert(row, unknown_[j]) = -a;
+            }
+            if (source_ == sourceType::mixed)
+            {
+                const vector2D r(x[j] - x[i]);
+                div += ((U[j] - U[i]) & r)*wN_[k]/max(magSqr(r), minR2_);
+            }
+        }
+        A.insert(row, row) = diag;
+
+        const scalar densitySource = rho_/sqr(dt)*(n0N_ - n[i])/n0N_;
+        const scalar rhs =
+            source_ == sourceType::mixed
+          ? rho_/dt*divCoeff*div + relaxation_*densitySource
+          : densitySource;
+        b[row] = -rhs;
+        sol[row] = p[i];
+    }
+    A.makeCompressed();
+
+    const pressureSolver::performance perf = solver_->solve(A, b, sol);
+    info_.ppeIterations = perf.iterations;
+    info_.ppeResidual = perf.residual;
+    info_.ppeConverged = perf.converged;
+
+    for (label i = 0; i < nPart; ++i)
+    {
+        const label row = unknown_[i];
+        if (row >= 0)
+        {
+            p[i] = (clampNegative_ && sol[row] < 0) ? 0 : sol[row];
+        }
+    }
+}
+
+
+void Foam::mpsFluid::correct(const scalar dt)
+{
+    UList<vector2D>& x = cloud_.x();
+    UList<vector2D>& U = cloud_.U();
+    const UList<scalar>& p = cloud_.p();
+    const UList<particleKind>& kind = cloud_.kind();
+    const labelList& offsets = nbrs_.offsets();
+    const labelList& nbr = nbrs_.neighbours();
+    const label n = cloud_.size();
+    const scalar coeff = 2/n0G_;
+
+    gradP_.setSize(n);
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        gradP_[i] = Zero;
+        if (kind[i] != particleKind::fluid)
+        {
+            continue;
+        }
+        // Minimum pressure over i and its pressure-carrying neighbours
+        scalar pMin = p[i];
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            if (kind[j] != particleKind::dummy && wG_[k] > 0)
+            {
+                pMin = min(pMin, p[j]);
+            }
+        }
+        vector2D grad(Zero);
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            if (kind[j] == particleKind::dummy)
+            {
+                continue;
+            }
+            const vector2D r(x[j] - x[i]);
+            grad += ((p[j] - pMin)*wG_[k]/max(magSqr(r), minR2_))*r;
+        }
+        gradP_[i] = coeff*grad;
+    }
+
+    scalar maxSpeed2 = 0;
+
+    #pragma omp parallel for schedule(static) reduction(max:maxSpeed2)
+    for (label i = 0; i < n; ++i)
+    {
+        if (kind[i] == particleKind::fluid)
+        {
+            const vector2D dU(-(dt/rho_)*gradP_[i]);
+            U[i] += dU;
+            x[i] += dt*dU;
+            maxSpeed2 = max(maxSpeed2, magSqr(U[i]));
+        }
+    }
+    info_.maxSpeed = ::sqrt(maxSpeed2);
+}
+
+
+Foam::label Foam::mpsFluid::removeOutside()
+{
+    const UList<vector2D>& x = cloud_.x();
+    const UList<particleKind>& kind = cloud_.kind();
+    List<bool> keep(cloud_.size(), true);
+    label nOut = 0;
+    forAll(x, i)
+    {
+        if
+        (
+            kind[i] == particleKind::fluid
+         && (
+                x[i].x() < domain_.min().x() || x[i].x() > domain_.max().x()
+             || x[i].y() < domain_.min().y() || x[i].y() > domain_.max().y()
+            )
+        )
+        {
+            keep[i] = false;
+            ++nOut;
+        }
+    }
+    if (nOut)
+    {
+        cloud_.subset(keep);
+    }
+    return nOut;
+}
+
+
+bool Foam::mpsFluid::allFinite() const
+{
+    const UList<vector2D>& x = cloud_.x();
+    const UList<vector2D>& U = cloud_.U();
+    const UList<scalar>& p = cloud_.p();
+    bool finite = true;
+
+    #pragma omp parallel for schedule(static) reduction(&&:finite)
+    for (label i = 0; i < cloud_.size(); ++i)
+    {
+        finite = finite
+            && std::isfinite(x[i].x()) && std::isfinite(x[i].y())
+            && std::isfinite(U[i].x()) && std::isfinite(U[i].y())
+            && std::isfinite(p[i]);
+    }
+    return finite;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::mpsFluid::mpsFluid
+(
+    mpsCloud& cloud,
+    const dictionary& dict,
+    const boundBox& domain
+)
+:
+    cloud_(cloud),
+    rho_(readPositive(dict, "rho")),
+    nu_(dict.get<scalar>("nu")),
+    g_(Zero),
+    l0_(readPositive(dict, "l0")),
+    minR_(1e-3*l0_),
+    minR2_(sqr(minR_)),
+    source_(sourceType::mixed),
+    relaxation_(0.01),
+    compressibility_(0),
+    clampNegative_(true),
+    domain_(domain)
+{
+    if (nu_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'nu' (kinematic viscosity) must not be negative, got "
+            << nu_ << exit(FatalIOError);
+    }
+    const vector g(dict.get<vector>("g"));
+    g_ = vector2D(g.x(), g.y());
+
+    const dictionary& reDict = dict.subDict("re");
+    auto radius = [&](const word& key)
+    {
+        const scalar re = reDict.get<scalar>(key);
+        if (!(re > 1))
+        {
+            FatalIOErrorInFunction(reDict)
+                << "Entry '" << key << "' (radius in units of l0) must"
+                << " exceed 1, got " << re << exit(FatalIOError);
+        }
+        return re*l0_;
+    };
+    kN_ = mpsKernel::New(dict, radius("numberDensity"));
+    kG_ = mpsKernel::New(dict, radius("gradient"));
+    kL_ = mpsKernel::New(dict, radius("laplacian"));
+    kV_ = mpsKernel::New(dict, radius("viscosity"));
+
+    n0N_ = kN_->latticeNumberDensity(l0_);
+    n0G_ = kG_->latticeNumberDensity(l0_);
+    n0L_ = kL_->latticeNumberDensity(l0_);
+    lambdaL_ = kL_->latticeLambda(l0_);
+    n0V_ = kV_->latticeNumberDensity(l0_);
+    lambdaV_ = kV_->latticeLambda(l0_);
+    F0_ = kN_->latticeSurfaceAsymmetry(l0_);
+
+    if (const dictionary* ppePtr = dict.findDict("ppe"))
+    {
+        const dictionary& ppe = *ppePtr;
+        source_ = sourceTypeNames.getOrDefault("source", ppe, source_);
+        relaxation_ = ppe.getOrDefault<scalar>("relaxation", relaxation_);
+        compressibility_ =
+            ppe.getOrDefault<scalar>("compressibility", compressibility_);
+        clampNegative_ = ppe.getOrDefault<bool>("clampNegative", true);
+        if (relaxation_ < 0 || relaxation_ > 1 || compressibility_ < 0)
+        {
+            FatalIOErrorInFunction(ppe)
+                << "Entries 'relaxation' (0 to 1, got " << relaxation_
+                << ") and 'compressibility' (not negative, got "
+                << compressibility_ << ") are out of range"
+                << exit(FatalIOError);
+        }
+    }
+
+    freeSurface_ = freeSurfaceModel::New(dict);
+    collision_ = collisionModel::New(dict);
+    solver_ = pressureSolver::New(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::mpsFluid::evaluate()
+{
+    updateNeighbours();
+    updateNumberDensity();
+    freeSurface_->identify
+    (
+        cloud_, nbrs_, wN_, n0N_, F0_, cloud_.surface()
+    );
+}
+
+
+const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
+{
+    clockValue clock(true);
+    auto lap = [&clock](scalar& t)
+    {
+        t += clock.elapsed();
+        clock.update();
+    };
+
+    predict(dt);
+    lap(info_.timeRest);
+
+    info_.nCollisions = collision_->correct
+    (
+        cloud_, nbrsV_, l0_, dt, cloud_.x(), cloud_.U()
+    );
+    info_.finite = allFinite();
+    if (!info_.finite)
+    {
+        // Nothing more can be computed from non-finite positions
+        return info_;
+    }
+    info_.nRemoved = removeOutside();
+    lap(info_.timeRest);
+
+    updateNeighbours();
+    lap(info_.timeNeighbours);
+
+    updateNumberDensity();
+    freeSurface_->identify
+    (
+        cloud_, nbrs_, wN_, n0N_, F0_, cloud_.surface()
+    );
+    info_.nSurface = 0;
+    for (const bool s : cloud_.surface())
+    {
+        info_.nSurface += s;
+    }
+    lap(info_.timeRest);
+
+    {
+        clockValue solveClock(true);
+        solvePressure(dt);
+        const scalar tSolve = solveClock.elapsed();
+        lap(info_.timeAssembly);
+        info_.timeAssembly -= tSolve;
+        info_.timeSolve += tSolve;
+    }
+
+    correct(dt);
+    info_.finite = allFinite() && std::isfinite(info_.ppeResidual);
+    info_.nRemoved += removeOutside();
+    lap(info_.timeRest);
+
+    return info_;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,67 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "mpsState.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(mpsState, 0);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::mpsState::mpsState
+(
+    const objectRegistry& db,
+    const mpsCloud& cloud,
+    const mpsFluid& fluid
+)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            typeName,
+            db.time().constant(),
+            db,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            true
+        )
+    ),
+    cloud_(cloud),
+    fluid_(fluid)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::mpsState& Foam::mpsState::New(const objectRegistry& db)
+{
+    const mpsState* ptr = db.findObject<mpsState>(typeName);
+    if (!ptr)
+    {
+        FatalErrorInFunction
+            << "No MPS particles in " << db.name() << ": this function"
+            << " object works with the mpsFsiFoam solver"
+            << exit(FatalError);
+    }
+    return *ptr;
+}
+
+
+// ************************************************************************* //

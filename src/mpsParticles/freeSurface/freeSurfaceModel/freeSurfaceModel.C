@@ -1,0 +1,124 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "freeSurfaceModel.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(freeSurfaceModel, 0);
+    defineRunTimeSelectionTable(freeSurfaceModel, dictionary);
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::freeSurfaceModel::readFraction
+(
+    const word& key,
+    const scalar deflt
+) const
+{
+    const scalar value = dict_.getOrDefault<scalar>(key, deflt);
+    if (!(value > 0 && value <= 1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry '" << key << "' must lie in (0, 1], got " << value
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+void Foam::freeSurfaceModel::numberDensityTest
+(
+    const mpsCloud& cloud,
+    const scalar beta,
+    const scalar n0,
+    const particleKind kind,
+    UList<bool>& surface
+)
+{
+    const UList<scalar>& n = cloud.n();
+    const UList<particleKind>& kinds = cloud.kind();
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < cloud.size(); ++i)
+    {
+        if (kinds[i] == kind)
+        {
+            surface[i] = (n[i] < beta*n0);
+        }
+    }
+}
+
+
+void Foam::freeSurfaceModel::asymmetryTest
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const UList<scalar>& w,
+    const scalar n0,
+    const scalar F0,
+    const scalar beta,
+    const scalar asymmetry,
+    const particleKind kind,
+    UList<bool>& surface
+)
+{
+    const UList<vector2D>& x = cloud.x();
+    const UList<scalar>& n = cloud.n();
+    const UList<particleKind>& kinds = cloud.kind();
+    const labelList& offsets = nbrs.offsets();
+    const labelList& nbr = nbrs.neighbours();
+    const scalar limit = sqr(asymmetry*F0*n0/2);
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < cloud.size(); ++i)
+    {
+        if (kinds[i] != kind)
+        {
+            continue;
+        }
+        if (n[i] < beta*n0)
+        {
+            surface[i] = true;
+            continue;
+        }
+        vector2D F(Zero);
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            if (kinds[j] == particleKind::dummy)
+            {
+                continue;
+            }
+            const vector2D d(x[i] - x[j]);
+            F += (w[k]/max(mag(d), SMALL))*d;
+        }
+        // |(2/n0) F| > asymmetry F0
+        surface[i] = (magSqr(F) > limit);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::freeSurfaceModel::freeSurfaceModel(const dictionary& dict)
+:
+    dict_(dict)
+{}
+
+
+// ************************************************************************* //

@@ -1,0 +1,61 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "improved.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace freeSurfaceModels
+{
+    defineTypeNameAndDebug(improved, 0);
+    addToRunTimeSelectionTable(freeSurfaceModel, improved, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::freeSurfaceModels::improved::improved(const dictionary& dict)
+:
+    freeSurfaceModel(dict),
+    beta_(readFraction("beta", 0.8)),
+    asymmetry_(readFraction("asymmetry", 0.6)),
+    wallBeta_(readFraction("wallBeta", 0.97))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::freeSurfaceModels::improved::identify
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const UList<scalar>& w,
+    const scalar n0,
+    const scalar F0,
+    UList<bool>& surface
+) const
+{
+    surface = false;
+    asymmetryTest
+    (
+        cloud, nbrs, w, n0, F0, beta_, asymmetry_, particleKind::fluid, surface
+    );
+    numberDensityTest(cloud, wallBeta_, n0, particleKind::wall, surface);
+}
+
+
+// ************************************************************************* //

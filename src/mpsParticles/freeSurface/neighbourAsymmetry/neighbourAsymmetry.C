@@ -1,0 +1,62 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "neighbourAsymmetry.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace freeSurfaceModels
+{
+    defineTypeNameAndDebug(neighbourAsymmetry, 0);
+    addToRunTimeSelectionTable(freeSurfaceModel, neighbourAsymmetry, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::freeSurfaceModels::neighbourAsymmetry::neighbourAsymmetry(const dictionary& dict)
+:
+    freeSurfaceModel(dict),
+    beta_(readFraction("beta", 0.8)),
+    asymmetry_(readFraction("asymmetry", 0.6))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::freeSurfaceModels::neighbourAsymmetry::identify
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const UList<scalar>& w,
+    const scalar n0,
+    const scalar F0,
+    UList<bool>& surface
+) const
+{
+    surface = false;
+    for (const particleKind k : {particleKind::fluid, particleKind::wall})
+    {
+        asymmetryTest
+        (
+            cloud, nbrs, w, n0, F0, beta_, asymmetry_, k, surface
+        );
+    }
+}
+
+
+// ************************************************************************* //

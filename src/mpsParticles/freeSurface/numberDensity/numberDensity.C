@@ -1,0 +1,56 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "numberDensity.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace freeSurfaceModels
+{
+    defineTypeNameAndDebug(numberDensity, 0);
+    addToRunTimeSelectionTable(freeSurfaceModel, numberDensity, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::freeSurfaceModels::numberDensity::numberDensity(const dictionary& dict)
+:
+    freeSurfaceModel(dict),
+    beta_(readFraction("beta", 0.97))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::freeSurfaceModels::numberDensity::identify
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const UList<scalar>& w,
+    const scalar n0,
+    const scalar F0,
+    UList<bool>& surface
+) const
+{
+    surface = false;
+    numberDensityTest(cloud, beta_, n0, particleKind::fluid, surface);
+    numberDensityTest(cloud, beta_, n0, particleKind::wall, surface);
+}
+
+
+// ************************************************************************* //

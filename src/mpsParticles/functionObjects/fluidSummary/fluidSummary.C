@@ -1,0 +1,149 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fluidSummary.H"
+#include "mpsState.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(fluidSummary, 0);
+    addToRunTimeSelectionTable(functionObject, fluidSummary, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::fluidSummary::writeFileHeader(Ostream& os)
+{
+    writeHeader(os, "MPS fluid summary");
+    writeCommented(os, "Time");
+    for
+    (
+        const word col
+      : {
+            "nFluid", "nWall", "nDummy", "nSurface", "volume", "nError",
+            "ppeIterations", "ppeResidual", "nCollisions", "kineticEnergy",
+            "maxSpeed", "xMax", "yMax"
+        }
+    )
+    {
+        writeTabbed(os, col);
+    }
+    os  << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::fluidSummary::fluidSummary
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name, typeName, dict)
+{
+    read(dict);
+    if (Pstream::master())
+    {
+        writeFileHeader(file());
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::fluidSummary::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    writeFile::read(dict);
+    return true;
+}
+
+
+bool Foam::functionObjects::fluidSummary::execute()
+{
+    return true;
+}
+
+
+bool Foam::functionObjects::fluidSummary::write()
+{
+    const mpsState& state = mpsState::New(mesh_);
+    const mpsCloud& cloud = state.cloud();
+    const mpsFluid& fluid = state.fluid();
+    const mpsFluid::stepInfo& info = fluid.info();
+    const scalar n0 = fluid.n0();
+    const scalar l0 = fluid.l0();
+
+    label nSurface = 0;
+    label nInterior = 0;
+    scalar nError = 0;
+    scalar sumU2 = 0;
+    scalar maxU2 = 0;
+    vector2D xMax(-GREAT, -GREAT);
+    forAll(cloud.kind(), i)
+    {
+        const particleKind k = cloud.kind()[i];
+        if (k == particleKind::dummy || k == particleKind::structure)
+        {
+            continue;
+        }
+        nSurface += cloud.surface()[i];
+        if (k == particleKind::fluid)
+        {
+            const scalar u2 = magSqr(cloud.U()[i]);
+            xMax = max(xMax, cloud.x()[i]);
+            sumU2 += u2;
+            maxU2 = max(maxU2, u2);
+            if (!cloud.surface()[i])
+            {
+                nError += mag(cloud.n()[i]/n0 - 1);
+                ++nInterior;
+            }
+        }
+    }
+
+    const label nFluid = cloud.count(particleKind::fluid);
+    if (Pstream::master())
+    {
+        OFstream& os = file();
+        writeCurrentTime(os);
+        os  << tab << nFluid
+            << tab << cloud.count(particleKind::wall)
+            << tab << cloud.count(particleKind::dummy)
+            << tab << nSurface
+            << tab << nFluid*sqr(l0)
+            << tab << (nInterior ? nError/nInterior : 0)
+            << tab << info.ppeIterations
+            << tab << info.ppeResidual
+            << tab << info.nCollisions
+            << tab << 0.5*fluid.rho()*sqr(l0)*sumU2
+            << tab << ::sqrt(maxU2)
+            << tab << xMax.x()
+            << tab << xMax.y()
+            << endl;
+    }
+    return true;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,120 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "PCG.H"
+#include "addToRunTimeSelectionTable.H"
+#include <Eigen/IterativeLinearSolvers>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace pressureSolvers
+{
+    defineTypeNameAndDebug(PCG, 0);
+    addToRunTimeSelectionTable(pressureSolver, PCG, dictionary);
+}
+}
+
+const Foam::Enum<Foam::pressureSolvers::PCG::preconditionerType>
+Foam::pressureSolvers::PCG::preconditionerNames
+({
+    { preconditionerType::diagonal, "diagonal" },
+    { preconditionerType::incompleteCholesky, "incompleteCholesky" },
+});
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+template<class Solver>
+Foam::pressureSolver::performance solveWith
+(
+    Solver& solver,
+    const Foam::ppeMatrix& A,
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& p,
+    const Foam::scalar tolerance,
+    const Foam::label maxIter
+)
+{
+    solver.setTolerance(tolerance);
+    solver.setMaxIterations(maxIter);
+    solver.compute(A);
+    p = solver.solveWithGuess(b, p);
+
+    Foam::pressureSolver::performance perf;
+    perf.iterations = solver.iterations();
+    perf.residual = solver.error();
+    perf.converged = (solver.info() == Eigen::Success);
+    return perf;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pressureSolvers::PCG::PCG(const dictionary& dict)
+:
+    pressureSolver(dict),
+    preconditioner_
+    (
+        preconditionerNames.getOrDefault
+        (
+            "preconditioner",
+            dict,
+            preconditionerType::diagonal
+        )
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::pressureSolver::performance Foam::pressureSolvers::PCG::solve
+(
+    const ppeMatrix& A,
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& p
+)
+{
+    if (b.size() == 0)
+    {
+        return performance();
+    }
+
+    if (preconditioner_ == preconditionerType::diagonal)
+    {
+        Eigen::ConjugateGradient
+        <
+            ppeMatrix,
+            Eigen::Lower|Eigen::Upper,
+            Eigen::DiagonalPreconditioner<double>
+        > cg;
+        return solveWith(cg, A, b, p, tolerance_, maxIter_);
+    }
+
+    Eigen::ConjugateGradient
+    <
+        ppeMatrix,
+        Eigen::Lower|Eigen::Upper,
+        Eigen::IncompleteCholesky<double, Eigen::Lower>
+    > cg;
+    return solveWith(cg, A, b, p, tolerance_, maxIter_);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,259 @@
+/*---------------------------------------------------------------------------*\
+    Fluid models on small, hand-built particle sets: the pairwise collision
+    keeps momentum and separates approaching pairs only; the free-surface
+    models flag a flat lattice surface and not the interior, and only
+    neighbourAsymmetry flags the wall particles below the water line.
+\*---------------------------------------------------------------------------*/
+
+#include <catch2/catch.hpp>
+#include "testTools.H"
+#include "collisionModel.H"
+#include "freeSurfaceModel.H"
+#include "mpsKernel.H"
+#include "Random.H"
+
+using namespace Foam;
+using Catch::Matchers::Contains;
+
+TEST_CASE("flat-surface asymmetry F0 at re 2.1 l0 by hand")
+{
+    // Neighbours in the row below at distance l0 (w = 1.1), sqrt(2) l0
+    // (w = 2.1/sqrt(2) - 1, two of them, cos 45) and 2 l0 below (w = 0.05):
+    // |F| = (2/n0) (1.1 + 2 (2.1/sqrt(2) - 1)/sqrt(2) + 0.05)
+    const dictionary d(test::dict("kernel original;"));
+    autoPtr<mpsKernel> k(mpsKernel::New(d, 2.1*0.01));
+    const scalar n0 = k->latticeNumberDensity(0.01);
+    const scalar w2 = 2.1/std::sqrt(2.0) - 1;
+    const scalar F0 = 2/n0*(1.1 + 2*w2/std::sqrt(2.0) + 0.05);
+    CHECK(k->latticeSurfaceAsymmetry(0.01) == Approx(F0).epsilon(1e-12));
+    CHECK(F0 == Approx(0.561).epsilon(1e-3));       // physics.md
+}
+
+
+TEST_CASE("pairwise collision keeps momentum and parts approaching pairs")
+{
+    // 400 fluid particles, randomly placed and moving, plus a wall row
+    const scalar l0 = 0.01;
+    Random rnd(7);
+    mpsCloud cloud;
+    const label r = cloud.addRegion("test");
+    for (label i = 0; i < 400; ++i)
+    {
+        cloud.append
+        (
+            vector2D(0.2*rnd.sample01<scalar>(), 0.2*rnd.sample01<scalar>()),
+            particleKind::fluid, r, l0
+        );
+        cloud.U()[i] = vector2D(rnd.sample01<scalar>() - 0.5, rnd.sample01<scalar>() - 0.5);
+    }
+    for (label i = 0; i < 20; ++i)
+    {
+        cloud.append(vector2D(i*l0, -0.003), particleKind::wall, r, l0);
+    }
+
+    const neighbourList nbrs(cloud.x(), 2.1*l0);
+    List<vector2D> x(cloud.x());
+    List<vector2D> U(cloud.U());
+
+    vector2D fluidMomentum(Zero);
+    forAll(U, i)
+    {
+        if (cloud.kind()[i] == particleKind::fluid)
+        {
+            fluidMomentum += U[i];
+        }
+    }
+
+    const dictionary props(test::dict("collision { type pairwise; alpha 0.85; e 0.2; }"));
+    autoPtr<collisionModel> model(collisionModel::New(props));
+    const scalar dt = 1e-3;
+    const label nPairs = model->correct(cloud, nbrs, l0, dt, x, U);
+    REQUIRE(nPairs > 10);           // the test exercises collisions
+
+    // Fluid-fluid exchanges cancel; only fluid-wall pairs change momentum
+    vector2D after(Zero);
+    vector2D wallImpulse(Zero);
+    forAll(U, i)
+    {
+        if (cloud.kind()[i] == particleKind::fluid)
+        {
+            after += U[i];
+        }
+        else
+        {
+            CHECK(U[i] == cloud.U()[i]);     // walls are not moved
+            CHECK(x[i] == cloud.x()[i]);
+        }
+    }
+    // Without the wall row, momentum is kept to round-off
+    mpsCloud fluidOnly;
+    const label rf = fluidOnly.addRegion("fluid");
+    for (label i = 0; i < 400; ++i)
+    {
+        fluidOnly.append(cloud.x()[i], particleKind::fluid, rf, l0);
+        fluidOnly.U()[i] = cloud.U()[i];
+    }
+    const neighbourList nbrsF(fluidOnly.x(), 2.1*l0);
+    List<vector2D> xf(fluidOnly.x());
+    List<vector2D> Uf(fluidOnly.U());
+    model->correct(fluidOnly, nbrsF, l0, dt, xf, Uf);
+    vector2D pBefore(Zero), pAfter(Zero);
+    scalar changed = 0;
+    forAll(Uf, i)
+    {
+        pBefore += fluidOnly.U()[i];
+        pAfter += Uf[i];
+        changed += mag(Uf[i] - fluidOnly.U()[i]);
+        // positions follow the velocity change
+        CHECK(mag((xf[i] - fluidOnly.x()[i]) - dt*(Uf[i] - fluidOnly.U()[i])) < 1e-15);
+    }
+    CHECK(changed > 0.1);
+    CHECK(mag(pAfter - pBefore) < 1e-12);
+
+    // A single approaching pair with e = 1 exchanges its normal velocities
+    mpsCloud pair;
+    const label rp = pair.addRegion("pair");
+    pair.append(vector2D(0, 0), particleKind::fluid, rp, l0);
+    pair.append(vector2D(0.5*l0, 0), particleKind::fluid, rp, l0);
+    pair.U()[0] = vector2D(1, 0.3);
+    pair.U()[1] = vector2D(-1, 0);
+    const neighbourList nbrsP(pair.x(), 2.1*l0);
+    List<vector2D> xp(pair.x()), Up(pair.U());
+    const dictionary elastic(test::dict("collision { type pairwise; e 1; }"));
+    collisionModel::New(elastic)->correct(pair, nbrsP, l0, dt, xp, Up);
+    CHECK(Up[0].x() == Approx(-1));
+    CHECK(Up[0].y() == Approx(0.3));    // tangential part kept
+    CHECK(Up[1].x() == Approx(1));
+
+    // Receding pairs are left alone
+    List<vector2D> Ur(2);
+    Ur[0] = vector2D(-1, 0);
+    Ur[1] = vector2D(1, 0);
+    List<vector2D> xr(pair.x());
+    CHECK(collisionModel::New(elastic)->correct(pair, nbrsP, l0, dt, xr, Ur) == 0);
+    CHECK(Ur[0].x() == -1);
+}
+
+
+TEST_CASE("free-surface models on a lattice tank")
+{
+    // A tank 20 l0 wide, water 10 rows deep, wall + 2 dummy layers, walls
+    // rising 5 rows above the water
+    const scalar l0 = 0.01;
+    mpsCloud c;
+    const label r = c.addRegion("tank");
+    for (label j = 0; j < 10; ++j)
+    {
+        for (label i = 0; i < 20; ++i)
+        {
+            c.append(l0*vector2D(i + 0.5, j + 0.5), particleKind::fluid, r, l0);
+        }
+    }
+    for (label k = 0; k < 3; ++k)
+    {
+        const particleKind kind = (k == 0 ? particleKind::wall : particleKind::dummy);
+        for (label i = -k - 1; i < 20 + k + 1; ++i)
+        {
+            c.append(l0*vector2D(i + 0.5, -k - 0.5), kind, r, l0);
+        }
+        for (label j = -k; j < 15; ++j)
+        {
+            c.append(l0*vector2D(-k - 0.5, j + 0.5), kind, r, l0);
+            c.append(l0*vector2D(20 + k + 0.5, j + 0.5), kind, r, l0);
+        }
+    }
+
+    const dictionary kd(test::dict("kernel original;"));
+    autoPtr<mpsKernel> k(mpsKernel::New(kd, 2.1*l0));
+    const scalar n0 = k->latticeNumberDensity(l0);
+    const scalar F0 = k->latticeSurfaceAsymmetry(l0);
+    const neighbourList nbrs(c.x(), 2.1*l0);
+    List<scalar> w(nbrs.nPairs());
+    forAll(c.x(), i)
+    {
+        scalar ni = 0;
+        for (label kk = nbrs.offsets()[i]; kk < nbrs.offsets()[i + 1]; ++kk)
+        {
+            w[kk] = k->w(mag(c.x()[nbrs.neighbours()[kk]] - c.x()[i]));
+            ni += w[kk];
+        }
+        c.n()[i] = ni;
+    }
+
+    auto flagged = [&](const word& type)
+    {
+        const dictionary d(test::dict("freeSurface { type " + type + "; }"));
+        List<bool> s(c.size(), false);
+        freeSurfaceModel::New(d)->identify(c, nbrs, w, n0, F0, s);
+        return s;
+    };
+
+    for (const word type : {"numberDensity", "neighbourAsymmetry", "improved"})
+    {
+        INFO("model " << type);
+        const List<bool> s(flagged(type));
+        label topFlagged = 0, deepFlagged = 0;
+        forAll(c.x(), i)
+        {
+            if (c.kind()[i] != particleKind::fluid) continue;
+            const scalar depth = 0.1 - c.x()[i].y();
+            if (depth < l0) topFlagged += s[i];
+            if (depth > 3*l0) deepFlagged += s[i];
+        }
+        CHECK(topFlagged == 20);        // the whole top row
+        CHECK(deepFlagged == 0);
+        forAll(c.x(), i)
+        {
+            CHECK((c.kind()[i] != particleKind::dummy || !s[i]));
+        }
+    }
+
+    // Wall particles below the water line (y < 0.1 - l0), not at corners
+    auto wallsBelowFlagged = [&](const List<bool>& s)
+    {
+        label n = 0, total = 0;
+        forAll(c.x(), i)
+        {
+            const vector2D& p = c.x()[i];
+            if
+            (
+                c.kind()[i] == particleKind::wall
+             && p.y() > 0 && p.y() < 0.1 - l0
+            )
+            {
+                ++total;
+                n += s[i];
+            }
+        }
+        REQUIRE(total == 2*9);
+        return n;
+    };
+    CHECK(wallsBelowFlagged(flagged("improved")) == 0);
+    CHECK(wallsBelowFlagged(flagged("numberDensity")) == 0);
+    CHECK(wallsBelowFlagged(flagged("neighbourAsymmetry")) == 2*9);
+}
+
+
+TEST_CASE("unknown fluid model names list the valid ones")
+{
+    CHECK_THAT
+    (
+        test::errorOf([]{ freeSurfaceModel::New(test::dict("freeSurface { type magic; }")); }),
+        Contains("magic") && Contains("improved") && Contains("neighbourAsymmetry")
+    );
+    CHECK_THAT
+    (
+        test::errorOf([]{ collisionModel::New(test::dict("collision { type soft; }")); }),
+        Contains("soft") && Contains("pairwise") && Contains("none")
+    );
+    CHECK_THAT
+    (
+        test::errorOf([]{ freeSurfaceModel::New(test::dict("freeSurface { type improved; asymmetry 1.5; }")); }),
+        Contains("asymmetry")
+    );
+    CHECK_THAT
+    (
+        test::errorOf([]{ collisionModel::New(test::dict("collision { type pairwise; alpha 1.2; }")); }),
+        Contains("alpha")
+    );
+}

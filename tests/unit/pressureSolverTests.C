@@ -1,0 +1,107 @@
+/*---------------------------------------------------------------------------*\
+    Pressure solvers against Eigen's direct solver (LDL^T) on a 2D Poisson
+    matrix of the shape of the PPE (5-point stencil, Dirichlet on one side):
+    the relative residual meets the tolerance, the solution agrees, and a
+    warm start from the solution needs (almost) no iterations.
+\*---------------------------------------------------------------------------*/
+
+#include <catch2/catch.hpp>
+#include "testTools.H"
+#include "pressureSolver.H"
+#include <Eigen/SparseCholesky>
+
+using namespace Foam;
+using Catch::Matchers::Contains;
+
+namespace
+{
+
+ppeMatrix poisson(const label nx, const label ny)
+{
+    std::vector<Eigen::Triplet<double>> t;
+    auto id = [nx](label i, label j) { return j*nx + i; };
+    for (label j = 0; j < ny; ++j)
+    {
+        for (label i = 0; i < nx; ++i)
+        {
+            scalar diag = 0;
+            const label di[4] = {1, -1, 0, 0};
+            const label dj[4] = {0, 0, 1, -1};
+            for (label k = 0; k < 4; ++k)
+            {
+                const label ii = i + di[k], jj = j + dj[k];
+                if (jj >= ny)
+                {
+                    diag += 1;          // Dirichlet p = 0 above the top row
+                }
+                else if (ii >= 0 && ii < nx && jj >= 0)
+                {
+                    diag += 1;
+                    t.emplace_back(id(i, j), id(ii, jj), -1.0);
+                }
+            }
+            t.emplace_back(id(i, j), id(i, j), diag);
+        }
+    }
+    ppeMatrix A(nx*ny, nx*ny);
+    A.setFromTriplets(t.begin(), t.end());
+    return A;
+}
+
+} // End anonymous namespace
+
+
+TEST_CASE("PCG solves the PPE-shaped system to its tolerance")
+{
+    const ppeMatrix A(poisson(60, 30));
+    Eigen::VectorXd b(A.rows());
+    for (label i = 0; i < b.size(); ++i)
+    {
+        b[i] = 1 + 0.5*std::sin(0.1*i);
+    }
+    const Eigen::SparseMatrix<double> Acol(A);
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct(Acol);
+    const Eigen::VectorXd exact = direct.solve(b);
+
+    for (const word pre : {"diagonal", "incompleteCholesky"})
+    {
+        INFO("preconditioner " << pre);
+        const dictionary d(test::dict
+        (
+            "pressureSolver { type PCG; preconditioner " + pre
+          + "; tolerance 1e-10; maxIter 5000; }"
+        ));
+        autoPtr<pressureSolver> solver(pressureSolver::New(d));
+
+        Eigen::VectorXd p = Eigen::VectorXd::Zero(A.rows());
+        const pressureSolver::performance perf = solver->solve(A, b, p);
+        CHECK(perf.converged);
+        CHECK(perf.iterations > 1);
+        CHECK((b - A*p).norm()/b.norm() < 1e-10);
+        CHECK((p - exact).norm()/exact.norm() < 1e-8);
+
+        // Warm start from the solution
+        const pressureSolver::performance warm = solver->solve(A, b, p);
+        CHECK(warm.iterations <= 1);
+    }
+}
+
+
+TEST_CASE("pressure solver entries are checked")
+{
+    CHECK_THAT
+    (
+        test::errorOf([]{ pressureSolver::New(test::dict("pressureSolver { type GMRES; }")); }),
+        Contains("GMRES") && Contains("PCG")
+    );
+    CHECK_THAT
+    (
+        test::errorOf([]{ pressureSolver::New(test::dict("pressureSolver { type PCG; tolerance 2; }")); }),
+        Contains("tolerance")
+    );
+    CHECK_THAT
+    (
+        test::errorOf([]{ pressureSolver::New(test::dict("pressureSolver { type PCG; preconditioner ilu; }")); }),
+        Contains("ilu") && Contains("diagonal")
+    );
+}
