@@ -147,10 +147,14 @@ int main(int argc, char *argv[])
     }
 
     const mpsFluid::stepInfo& info = fluid.info();
-    Info<< nl << "Time split: neighbours " << info.timeNeighbours
-        << " s, PPE assembly " << info.timeAssembly
-        << " s, PPE solve " << info.timeSolve
-        << " s, rest " << info.timeRest << " s" << nl;
+    const label nSteps = max(info.nSteps, label(1));
+    Info<< nl << "Fluid steps: " << info.nSteps
+        << ", mean PPE iterations " << scalar(info.totalPpeIterations)/nSteps
+        << nl
+        << "Time split [s]: neighbours " << info.timeNeighbours
+        << ", PPE assembly " << info.timeAssembly
+        << ", PPE solve " << info.timeSolve
+        << ", rest " << info.timeRest << nl;
 
     runTime.printExecutionTime(Info);
 

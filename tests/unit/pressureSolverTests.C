@@ -1,5 +1,6 @@
 /*---------------------------------------------------------------------------*\
-    Pressure solvers against Eigen's direct solver (LDL^T) on a 2D Poisson
+    Pressure solvers (Eigen's PCG, hypre's BoomerAMG-preconditioned CG)
+    against Eigen's direct solver (LDL^T) on a 2D Poisson
     matrix of the shape of the PPE (5-point stencil, Dirichlet on one side):
     the relative residual meets the tolerance, the solution agrees, and a
     warm start from the solution needs (almost) no iterations.
@@ -63,13 +64,20 @@ TEST_CASE("PCG solves the PPE-shaped system to its tolerance")
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct(Acol);
     const Eigen::VectorXd exact = direct.solve(b);
 
-    for (const word pre : {"diagonal", "incompleteCholesky"})
+    for
+    (
+        const std::string settings
+      : {
+            "type PCG; preconditioner diagonal;",
+            "type PCG; preconditioner incompleteCholesky;",
+            "type BoomerAMG;"
+        }
+    )
     {
-        INFO("preconditioner " << pre);
+        INFO("solver " << settings);
         const dictionary d(test::dict
         (
-            "pressureSolver { type PCG; preconditioner " + pre
-          + "; tolerance 1e-10; maxIter 5000; }"
+            "pressureSolver { " + settings + " tolerance 1e-10; maxIter 5000; }"
         ));
         autoPtr<pressureSolver> solver(pressureSolver::New(d));
 
@@ -92,7 +100,7 @@ TEST_CASE("pressure solver entries are checked")
     CHECK_THAT
     (
         test::errorOf([]{ pressureSolver::New(test::dict("pressureSolver { type GMRES; }")); }),
-        Contains("GMRES") && Contains("PCG")
+        Contains("GMRES") && Contains("PCG") && Contains("BoomerAMG")
     );
     CHECK_THAT
     (

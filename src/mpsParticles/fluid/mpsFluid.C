@@ -146,21 +146,25 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
     const labelList& nbr = nbrs_.neighbours();
     const label nPart = cloud_.size();
 
-    // Unknowns: fluid and wall particles off the surface
+    // Unknowns: every fluid and wall particle; a surface particle's row is
+    // p_i = 0 (scaled like an interior row), so that the matrix keeps its
+    // size while particles reach or leave the surface (a multigrid
+    // hierarchy can then serve several steps)
     unknown_.setSize(nPart);
     label nUnknowns = 0;
+    label nSolved = 0;
     for (label i = 0; i < nPart; ++i)
     {
-        const bool solved =
-            (kind[i] == particleKind::fluid || kind[i] == particleKind::wall)
-         && !surface[i];
-        unknown_[i] = solved ? nUnknowns++ : -1;
-        if (!solved)
+        const bool inPPE =
+            (kind[i] == particleKind::fluid || kind[i] == particleKind::wall);
+        unknown_[i] = inPPE ? nUnknowns++ : -1;
+        if (!inPPE || surface[i])
         {
             p[i] = 0;
         }
+        nSolved += (inPPE && !surface[i]);
     }
-    info_.nUnknowns = nUnknowns;
+    info_.nUnknowns = nSolved;
 
     // Rows: -<lap p>_i + (alpha rho/dt^2) p_i = -RHS_i (positive definite)
     const scalar lapCoeff = 2*2/(lambdaL_*n0L_);
@@ -176,16 +180,26 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
         const label row = unknown_[i];
         if (row >= 0)
         {
-            rowNnz[row] = offsets[i + 1] - offsets[i] + 1;
+            rowNnz[row] = surface[i] ? 1 : offsets[i + 1] - offsets[i] + 1;
         }
     }
     A.reserve(rowNnz);
+
+    // A typical diagonal, for the rows of surface particles
+    const scalar surfaceDiag = lapCoeff*n0L_;
 
     for (label i = 0; i < nPart; ++i)
     {
         const label row = unknown_[i];
         if (row < 0)
         {
+            continue;
+        }
+        if (surface[i])
+        {
+            A.insert(row, row) = surfaceDiag;
+            b[row] = 0;
+            sol[row] = 0;
             continue;
         }
 
@@ -200,7 +214,7 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
             }
             const scalar a = lapCoeff*wL_[k];
             diag += a;
-            if (unknown_[j] >= 0)
+            if (unknown_[j] >= 0 && !surface[j])
             {
                 A.insert(row, unknown_[j]) = -a;
             }
@@ -222,15 +236,18 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
     }
     A.makeCompressed();
 
+    clockValue solveClock(true);
     const pressureSolver::performance perf = solver_->solve(A, b, sol);
+    lastSolveTime_ = solveClock.elapsed();
     info_.ppeIterations = perf.iterations;
+    info_.totalPpeIterations += perf.iterations;
     info_.ppeResidual = perf.residual;
     info_.ppeConverged = perf.converged;
 
     for (label i = 0; i < nPart; ++i)
     {
         const label row = unknown_[i];
-        if (row >= 0)
+        if (row >= 0 && !surface[i])
         {
             p[i] = (clampNegative_ && sol[row] < 0) ? 0 : sol[row];
         }
@@ -365,10 +382,11 @@ Foam::mpsFluid::mpsFluid
     minR_(1e-3*l0_),
     minR2_(sqr(minR_)),
     source_(sourceType::mixed),
-    relaxation_(0.01),
+    relaxation_(0.05),
     compressibility_(0),
     clampNegative_(true),
-    domain_(domain)
+    domain_(domain),
+    lastSolveTime_(0)
 {
     if (nu_ < 0)
     {
@@ -450,6 +468,7 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
         clock.update();
     };
 
+    ++info_.nSteps;
     predict(dt);
     lap(info_.timeRest);
 
@@ -481,14 +500,11 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
     }
     lap(info_.timeRest);
 
-    {
-        clockValue solveClock(true);
-        solvePressure(dt);
-        const scalar tSolve = solveClock.elapsed();
-        lap(info_.timeAssembly);
-        info_.timeAssembly -= tSolve;
-        info_.timeSolve += tSolve;
-    }
+    // Assembly and solve: the solve's own time is measured inside
+    solvePressure(dt);
+    lap(info_.timeAssembly);
+    info_.timeAssembly -= lastSolveTime_;
+    info_.timeSolve += lastSolveTime_;
 
     correct(dt);
     info_.finite = allFinite() && std::isfinite(info_.ppeResidual);

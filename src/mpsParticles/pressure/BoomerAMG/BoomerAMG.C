@@ -1,0 +1,280 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+// OpenMPI's C++ bindings are not wanted
+#define OMPI_SKIP_MPICXX 1
+#include <mpi.h>
+#include <HYPRE.h>
+#include <HYPRE_parcsr_ls.h>
+
+#include "BoomerAMG.H"
+#include "addToRunTimeSelectionTable.H"
+#include <cstdlib>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace pressureSolvers
+{
+    defineTypeNameAndDebug(BoomerAMG, 0);
+    addToRunTimeSelectionTable(pressureSolver, BoomerAMG, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Private Classes * * * * * * * * * * * * * * //
+
+struct Foam::pressureSolvers::BoomerAMG::hierarchy
+{
+    //- The matrix the hierarchy was built on (the hierarchy refers to it)
+    HYPRE_IJMatrix A = nullptr;
+
+    //- The multigrid
+    HYPRE_Solver amg = nullptr;
+
+    //- Its number of rows
+    HYPRE_BigInt n = 0;
+
+    //- Solves it has served
+    label age = 0;
+
+    void clear()
+    {
+        if (amg)
+        {
+            HYPRE_BoomerAMGDestroy(amg);
+            amg = nullptr;
+        }
+        if (A)
+        {
+            HYPRE_IJMatrixDestroy(A);
+            A = nullptr;
+        }
+        n = 0;
+        age = 0;
+    }
+
+    ~hierarchy()
+    {
+        clear();
+    }
+};
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Preconditioner setup that keeps the existing hierarchy
+HYPRE_Int keepHierarchy(HYPRE_Solver, HYPRE_Matrix, HYPRE_Vector, HYPRE_Vector)
+{
+    return 0;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::pressureSolvers::BoomerAMG::initialise()
+{
+    static bool started = false;
+    if (started)
+    {
+        return;
+    }
+    started = true;
+
+    int mpiStarted = 0;
+    MPI_Initialized(&mpiStarted);
+    if (!mpiStarted)
+    {
+        MPI_Init(nullptr, nullptr);
+        std::atexit([]()
+        {
+            int finalized = 0;
+            MPI_Finalized(&finalized);
+            if (!finalized)
+            {
+                HYPRE_Finalize();
+                MPI_Finalize();
+            }
+        });
+    }
+    HYPRE_Init();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pressureSolvers::BoomerAMG::BoomerAMG(const dictionary& dict)
+:
+    pressureSolver(dict),
+    strongThreshold_(dict.getOrDefault<scalar>("strongThreshold", 0.25)),
+    reuse_(dict.getOrDefault<label>("reuse", 10)),
+    hierarchy_(new hierarchy)
+{
+    if (reuse_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'reuse' (solves per multigrid hierarchy) must be at"
+            << " least 1, got " << reuse_ << exit(FatalIOError);
+    }
+    if (!(strongThreshold_ > 0 && strongThreshold_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'strongThreshold' must lie in (0, 1), got "
+            << strongThreshold_ << exit(FatalIOError);
+    }
+    static_assert
+    (
+        sizeof(HYPRE_BigInt) == sizeof(ppeMatrix::StorageIndex)
+     && sizeof(HYPRE_Real) == sizeof(double),
+        "hypre's integer and real types must match Eigen's"
+    );
+    initialise();
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * //
+
+Foam::pressureSolvers::BoomerAMG::~BoomerAMG()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::pressureSolver::performance Foam::pressureSolvers::BoomerAMG::solve
+(
+    const ppeMatrix& A,
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& p
+)
+{
+    performance perf;
+    const HYPRE_BigInt n = A.rows();
+    if (n == 0)
+    {
+        return perf;
+    }
+
+    // Matrix from the compressed rows of A
+    HYPRE_IJMatrix Aij;
+    HYPRE_IJMatrixCreate(MPI_COMM_SELF, 0, n - 1, 0, n - 1, &Aij);
+    HYPRE_IJMatrixSetObjectType(Aij, HYPRE_PARCSR);
+    HYPRE_IJMatrixInitialize(Aij);
+    {
+        std::vector<HYPRE_Int> nCols(n);
+        std::vector<HYPRE_BigInt> rows(n);
+        for (HYPRE_BigInt i = 0; i < n; ++i)
+        {
+            rows[i] = i;
+            nCols[i] = A.outerIndexPtr()[i + 1] - A.outerIndexPtr()[i];
+        }
+        HYPRE_IJMatrixSetValues
+        (
+            Aij, n, nCols.data(), rows.data(),
+            A.innerIndexPtr(), A.valuePtr()
+        );
+    }
+    HYPRE_IJMatrixAssemble(Aij);
+    HYPRE_ParCSRMatrix Apar;
+    HYPRE_IJMatrixGetObject(Aij, reinterpret_cast<void**>(&Apar));
+
+    // Vectors
+    std::vector<HYPRE_BigInt> idx(n);
+    for (HYPRE_BigInt i = 0; i < n; ++i)
+    {
+        idx[i] = i;
+    }
+    auto makeVector = [&](const double* values, HYPRE_IJVector& v)
+    {
+        HYPRE_IJVectorCreate(MPI_COMM_SELF, 0, n - 1, &v);
+        HYPRE_IJVectorSetObjectType(v, HYPRE_PARCSR);
+        HYPRE_IJVectorInitialize(v);
+        HYPRE_IJVectorSetValues(v, n, idx.data(), values);
+        HYPRE_IJVectorAssemble(v);
+    };
+    HYPRE_IJVector bij, xij;
+    makeVector(b.data(), bij);
+    makeVector(p.data(), xij);
+    HYPRE_ParVector bpar, xpar;
+    HYPRE_IJVectorGetObject(bij, reinterpret_cast<void**>(&bpar));
+    HYPRE_IJVectorGetObject(xij, reinterpret_cast<void**>(&xpar));
+
+    // The multigrid: built on this matrix, or kept from an earlier one
+    hierarchy& h = *hierarchy_;
+    const bool rebuild = (!h.amg || h.n != n || h.age >= reuse_);
+    if (rebuild)
+    {
+        h.clear();
+        HYPRE_BoomerAMGCreate(&h.amg);
+        HYPRE_BoomerAMGSetPrintLevel(h.amg, 0);
+        HYPRE_BoomerAMGSetCoarsenType(h.amg, 10);       // HMIS
+        HYPRE_BoomerAMGSetInterpType(h.amg, 6);         // extended+i
+        HYPRE_BoomerAMGSetPMaxElmts(h.amg, 4);
+        HYPRE_BoomerAMGSetStrongThreshold(h.amg, strongThreshold_);
+        HYPRE_BoomerAMGSetRelaxType(h.amg, 6);          // hybrid sym. GS
+        HYPRE_BoomerAMGSetNumSweeps(h.amg, 1);
+        HYPRE_BoomerAMGSetMaxIter(h.amg, 1);
+        HYPRE_BoomerAMGSetTol(h.amg, 0);
+        HYPRE_BoomerAMGSetup(h.amg, Apar, bpar, xpar);
+        h.A = Aij;
+        h.n = n;
+    }
+    ++h.age;
+
+    // PCG on this matrix, preconditioned by the hierarchy
+    HYPRE_Solver pcg;
+    HYPRE_ParCSRPCGCreate(MPI_COMM_SELF, &pcg);
+    HYPRE_PCGSetTol(pcg, tolerance_);
+    HYPRE_PCGSetMaxIter(pcg, maxIter_);
+    HYPRE_PCGSetTwoNorm(pcg, 1);
+    HYPRE_PCGSetPrintLevel(pcg, 0);
+    HYPRE_PCGSetPrecond
+    (
+        pcg,
+        reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSolve),
+        reinterpret_cast<HYPRE_PtrToSolverFcn>(keepHierarchy),
+        h.amg
+    );
+    HYPRE_ParCSRPCGSetup(pcg, Apar, bpar, xpar);
+    const HYPRE_Int status = HYPRE_ParCSRPCGSolve(pcg, Apar, bpar, xpar);
+
+    HYPRE_Int iterations = 0;
+    HYPRE_Real residual = 0;
+    HYPRE_PCGGetNumIterations(pcg, &iterations);
+    HYPRE_PCGGetFinalRelativeResidualNorm(pcg, &residual);
+    HYPRE_IJVectorGetValues(xij, n, idx.data(), p.data());
+    HYPRE_ClearAllErrors();
+
+    perf.iterations = iterations;
+    perf.residual = residual;
+    perf.converged = (status == 0 && residual <= tolerance_);
+
+    HYPRE_ParCSRPCGDestroy(pcg);
+    HYPRE_IJVectorDestroy(bij);
+    HYPRE_IJVectorDestroy(xij);
+    if (!rebuild)
+    {
+        // The hierarchy keeps the matrix it was built on
+        HYPRE_IJMatrixDestroy(Aij);
+    }
+
+    return perf;
+}
+
+
+// ************************************************************************* //
