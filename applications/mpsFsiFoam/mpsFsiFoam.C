@@ -39,7 +39,6 @@ Description
 #include "mpsCloud.H"
 #include "mpsKernel.H"
 #include "particleGenerator.H"
-#include "neighbourList.H"
 #include "mpsCloudOutput.H"
 #include "lagrangianCloudReader.H"
 #include "mpsFluid.H"

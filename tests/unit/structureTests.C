@@ -15,6 +15,16 @@ using namespace Foam;
 namespace
 {
 
+//- Structural step of the plate with n particles across: 0.3 h/c
+scalar plateDeltaT(const label n)
+{
+    const scalar E = 2e6, nu = 0.3975;
+    const scalar lambda = E*nu/((1 + nu)*(1 - 2*nu));
+    const scalar mu = E/(2*(1 + nu));
+    return 0.3*1.3*(0.02/n)/std::sqrt((lambda + 2*mu)/1000);
+}
+
+
 //- The plate with n particles across the thickness; tip mid-thickness
 //  particles are returned in tipA, tipB
 totalLagrangianSolid plate
@@ -49,9 +59,7 @@ totalLagrangianSolid plate
     props.nu = nu;
     props.planeStrain = true;
     props.spacing = ds;
-    const scalar lambda = E*nu/((1 + nu)*(1 - 2*nu));
-    const scalar mu = E/(2*(1 + nu));
-    props.dt = 0.3*1.3*ds/std::sqrt((lambda + 2*mu)/rho);
+    props.dt = plateDeltaT(n);
 
     totalLagrangianSolid solid(props, X, clamped);
 
@@ -106,15 +114,6 @@ scalar period(totalLagrangianSolid& solid, label tipA, label tipB, scalar tEnd, 
 }
 
 } // End anonymous namespace
-
-
-scalar plateDeltaT(const label n)
-{
-    const scalar E = 2e6, nu = 0.3975;
-    const scalar lambda = E*nu/((1 + nu)*(1 - 2*nu));
-    const scalar mu = E/(2*(1 + nu));
-    return 0.3*1.3*(0.02/n)/std::sqrt((lambda + 2*mu)/1000);
-}
 
 
 TEST_CASE("oscillating plate period converges from above")

@@ -71,7 +71,8 @@ Foam::functionObjects::particleProbes::particleProbes
     locations_(),
     fields_({"p", "U"}),
     radius_(2.1),
-    kernelDict_()
+    kernelDict_(),
+    kernel_()
 {
     read(dict);
     resetNames(fields_);
@@ -112,8 +113,10 @@ bool Foam::functionObjects::particleProbes::read(const dictionary& dict)
     }
     kernelDict_.clear();
     kernelDict_.add("kernel", dict.getOrDefault<word>("kernel", "polynomial"));
-    // Check the kernel name now, with the list of valid ones
+    // Check the kernel name now, with the list of valid ones; the kernel
+    // itself is built at the first write
     mpsKernel::New(kernelDict_, 1);
+    kernel_.clear();
     return true;
 }
 
@@ -128,8 +131,12 @@ bool Foam::functionObjects::particleProbes::write()
 {
     const mpsState& state = mpsState::New(mesh_);
     const mpsCloud& cloud = state.cloud();
-    const scalar re = radius_*state.fluid().l0();
-    autoPtr<mpsKernel> kernel(mpsKernel::New(kernelDict_, re));
+    if (!kernel_)
+    {
+        kernel_ = mpsKernel::New(kernelDict_, radius_*state.fluid().l0());
+    }
+    const mpsKernel& kernel = kernel_();
+    const scalar re = kernel.re();
 
     const label nProbes = locations_.size();
     scalarField p(nProbes, Zero);
@@ -150,7 +157,7 @@ bool Foam::functionObjects::particleProbes::write()
             const vector2D d(x[j].x() - locations_[i].x(), x[j].y() - locations_[i].y());
             if (magSqr(d) < re*re)
             {
-                const scalar w = kernel->w(mag(d));
+                const scalar w = kernel.w(mag(d));
                 sumW[i] += w;
                 p[i] += w*cloud.p()[j];
                 U[i] += w*cloud.U()[j];
