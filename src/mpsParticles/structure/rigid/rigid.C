@@ -1,0 +1,158 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "rigid.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace structureModels
+{
+    defineTypeNameAndDebug(rigid, 0);
+    addToRunTimeSelectionTable(structureModel, rigid, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::structureModels::rigid::internalForces
+(
+    List<vector2D>& force,
+    scalarList& torque
+) const
+{
+    force = Zero;
+    torque = Zero;
+}
+
+
+void Foam::structureModels::rigid::updateAcceleration()
+{
+    if (prescribed_)
+    {
+        ac_ = Zero;
+        alphaC_ = 0;
+        return;
+    }
+    vector2D F(Zero);
+    scalar T = 0;
+    forAll(f_, i)
+    {
+        const vector2D r(x_[i] - xc_);
+        F += f_[i];
+        T += r.x()*f_[i].y() - r.y()*f_[i].x();
+    }
+    ac_ = F/M_ + g_;
+    alphaC_ = T/J_;
+}
+
+
+void Foam::structureModels::rigid::place()
+{
+    const scalar c = ::cos(phi_);
+    const scalar s = ::sin(phi_);
+    forAll(X_, i)
+    {
+        const vector2D R(X_[i] - Xc_);
+        const vector2D r(c*R.x() - s*R.y(), s*R.x() + c*R.y());
+        x_[i] = xc_ + r;
+        v_[i] = vc_ + Omega_*vector2D(-r.y(), r.x());
+        theta_[i] = phi_;
+        omega_[i] = Omega_;
+        a_[i] = ac_;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::structureModels::rigid::rigid
+(
+    const dictionary& dict,
+    const UList<vector2D>& X,
+    const UList<bool>& clamped,
+    const scalar spacing
+)
+:
+    structureModel(dict, X, clamped, spacing),
+    Xc_(Zero),
+    xc_(Zero),
+    vc_(Zero),
+    ac_(Zero),
+    phi_(0),
+    Omega_(0),
+    alphaC_(0),
+    M_(mass()*X.size()),
+    J_(0),
+    prescribed_(false)
+{
+    forAll(X_, i)
+    {
+        Xc_ += X_[i];
+        prescribed_ = prescribed_ || clamped_[i];
+    }
+    Xc_ /= max(size(), label(1));
+    xc_ = Xc_;
+    forAll(X_, i)
+    {
+        J_ += mass()*magSqr(X_[i] - Xc_) + rotationalInertia();
+    }
+    if (dict_.found("deltaT"))
+    {
+        setDeltaT(dict_.get<scalar>("deltaT"));
+    }
+    evaluate();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::structureModels::rigid::advance(const label nSteps)
+{
+    if (dt_ <= 0)
+    {
+        FatalErrorInFunction
+            << "The structural time step is not set" << exit(FatalError);
+    }
+    const scalar dt = dt_;
+    for (label step = 0; step < nSteps; ++step)
+    {
+        if (prescribed_)
+        {
+            vc_ = clampedVelocity_;
+            xc_ += dt*vc_;
+        }
+        else
+        {
+            vc_ += 0.5*dt*ac_;
+            Omega_ += 0.5*dt*alphaC_;
+            xc_ += dt*vc_;
+            phi_ += dt*Omega_;
+        }
+        time_ += dt;
+        place();
+        updateAcceleration();
+        if (!prescribed_)
+        {
+            vc_ += 0.5*dt*ac_;
+            Omega_ += 0.5*dt*alphaC_;
+        }
+    }
+    place();
+}
+
+
+// ************************************************************************* //
