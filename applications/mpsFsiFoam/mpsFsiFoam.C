@@ -43,6 +43,7 @@ Description
 #include "lagrangianCloudReader.H"
 #include "mpsFluid.H"
 #include "mpsState.H"
+#include "mpsStructure.H"
 #include "clockValue.H"
 #include <fenv.h>
 
@@ -77,11 +78,10 @@ int main(int argc, char *argv[])
     {
         Info<< "Continuing from time " << runTime.timeName() << nl << endl;
     }
-    else
-    {
-        Info<< "Writing time " << runTime.timeName() << nl << endl;
-        output.write(cloud);
-    }
+    // The start time is written once the function objects are built (at
+    // the first runTime.run()), so that one with bad input stops the run
+    // before anything of an earlier run is overwritten
+    bool writeStart = !restart;
 
     const bool adjustTimeStep =
         runTime.controlDict().getOrDefault("adjustTimeStep", false);
@@ -97,16 +97,31 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
+        if (writeStart)
+        {
+            Info<< "Writing time " << runTime.timeName() << nl << endl;
+            output.write(cloud, &structure);
+            writeStart = false;
+        }
+
         ++runTime;
         ++stepi;
         const scalar dt = runTime.deltaTValue();
 
+        // Fluid first (when the case has fluid), then the structure,
+        // sub-cycled over the fluid step
         const label nFluidBefore = cloud.count(particleKind::fluid);
-        const mpsFluid::stepInfo& info = fluid.step(dt);
+        const mpsFluid::stepInfo& info =
+            nFluidBefore ? fluid.step(dt) : fluid.info();
 
-        #include "checkDivergence.H"
+        if (nFluidBefore)
+        {
+            #include "checkDivergence.H"
+        }
 
-        if (!info.ppeConverged)
+        structure.advance(runTime.value(), dt);
+
+        if (nFluidBefore && !info.ppeConverged)
         {
             WarningInFunction
                 << "Time " << runTime.timeName() << ", step " << stepi
@@ -121,7 +136,7 @@ int main(int argc, char *argv[])
         runTime.write();
         if (runTime.writeTime())
         {
-            output.write(cloud);
+            output.write(cloud, &structure);
             lastWritten = runTime.timeName();
         }
 
@@ -132,8 +147,13 @@ int main(int argc, char *argv[])
                 << "  PPE " << info.ppeIterations << " it, residual "
                 << info.ppeResidual
                 << "  surface " << info.nSurface
-                << "  Co " << Co
-                << "  wall " << wallClock.elapsed() << " s"
+                << "  Co " << Co;
+            if (structure.active())
+            {
+                Info<< "  structure " << structure.nSubSteps()
+                    << " sub-steps";
+            }
+            Info<< "  wall " << wallClock.elapsed() << " s"
                 << (runTime.writeTime() ? "  (written)" : "") << endl;
         }
 
@@ -145,6 +165,13 @@ int main(int argc, char *argv[])
         }
     }
 
+    if (writeStart)
+    {
+        // endTime = startTime: nothing to run, only the particles to write
+        Info<< "Writing time " << runTime.timeName() << nl << endl;
+        output.write(cloud, &structure);
+    }
+
     const mpsFluid::stepInfo& info = fluid.info();
     const label nSteps = max(info.nSteps, label(1));
     Info<< nl << "Fluid steps: " << info.nSteps
@@ -154,6 +181,11 @@ int main(int argc, char *argv[])
         << ", PPE assembly " << info.timeAssembly
         << ", PPE solve " << info.timeSolve
         << ", rest " << info.timeRest << nl;
+    if (structure.active())
+    {
+        Info<< "Structure sub-steps: " << structure.totalSubSteps()
+            << ", time " << structure.wallTime() << " s" << nl;
+    }
 
     runTime.printExecutionTime(Info);
 

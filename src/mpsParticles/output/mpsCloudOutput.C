@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsCloudOutput.H"
+#include "mpsStructure.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -24,14 +25,23 @@ Foam::mpsCloudOutput::mpsCloudOutput(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
+void Foam::mpsCloudOutput::write
+(
+    const mpsCloud& cloud,
+    const mpsStructure* structure
+)
 {
-    const cloudFields clouds[] =
+    cloudFields clouds[] =
     {
         cloudFields("fluid", cloud, {particleKind::fluid}),
         cloudFields("wall", cloud, {particleKind::wall, particleKind::dummy}),
         cloudFields("structure", cloud, {particleKind::structure})
     };
+
+    if (structure)
+    {
+        structure->addFields(clouds[2]);
+    }
 
     for (const cloudFields& c : clouds)
     {

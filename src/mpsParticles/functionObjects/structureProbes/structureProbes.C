@@ -1,0 +1,152 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "structureProbes.H"
+#include "mpsStructure.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(structureProbes, 0);
+    addToRunTimeSelectionTable(functionObject, structureProbes, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::structureProbes::writeFileHeader()
+{
+    OFstream& os = file();
+    writeHeader(os, "Structure probes: displacement [m]");
+    forAll(points_, i)
+    {
+        writeCommented(os, "Probe " + Foam::name(i));
+        os  << ' ' << vector(points_[i].x(), points_[i].y(), 0)
+            << "  " << names_[i] << nl;
+    }
+    writeCommented(os, "Time");
+    for (const word& n : names_)
+    {
+        writeTabbed(os, n + "_x");
+        writeTabbed(os, n + "_y");
+    }
+    os  << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::structureProbes::structureProbes
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    logFiles(mesh_, name)
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::structureProbes::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    logFiles::read(dict);
+
+    const dictionary& probes = dict.subDict("probes");
+    names_ = probes.toc();
+    points_.setSize(names_.size());
+    forAll(names_, i)
+    {
+        points_[i] = probes.get<vector2D>(names_[i]);
+    }
+    if (names_.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "No probes in 'probes' (name (x y) pairs)"
+            << exit(FatalIOError);
+    }
+    carriers_.clear();
+    return true;
+}
+
+
+bool Foam::functionObjects::structureProbes::write()
+{
+    const structureModel& s = mpsStructure::New(mesh_).model();
+    const List<vector2D>& X = s.X();
+
+    if (carriers_.empty())
+    {
+        // The file is opened at the first write: a run that stops before
+        // (bad input elsewhere) leaves the file of an earlier run as it was
+        resetName("displacement");
+        if (Pstream::master())
+        {
+            writeFileHeader();
+        }
+
+        carriers_.setSize(points_.size());
+        forAll(points_, i)
+        {
+            scalar dMin = GREAT;
+            forAll(X, k)
+            {
+                dMin = min(dMin, mag(X[k] - points_[i]));
+            }
+            DynamicList<label> c;
+            forAll(X, k)
+            {
+                if (mag(X[k] - points_[i]) <= dMin*(1 + 1e-6) + 1e-12)
+                {
+                    c.append(k);
+                }
+            }
+            carriers_[i] = std::move(c);
+        }
+    }
+
+    if (Pstream::master())
+    {
+        OFstream& os = file();
+        writeCurrentTime(os);
+        forAll(points_, i)
+        {
+            vector2D u(Zero);
+            for (const label k : carriers_[i])
+            {
+                const vector2D r(points_[i] - X[k]);
+                const scalar c = ::cos(s.theta()[k]);
+                const scalar sn = ::sin(s.theta()[k]);
+                const vector2D Rr(c*r.x() - sn*r.y(), sn*r.x() + c*r.y());
+                u += s.displacement(k) + Rr - r;
+            }
+            u /= carriers_[i].size();
+            os  << tab << u.x() << tab << u.y();
+        }
+        os  << endl;
+    }
+    return true;
+}
+
+
+// ************************************************************************* //
