@@ -18,6 +18,7 @@
 #include "rotatingParticles.H"
 #include "rigid.H"
 #include "Random.H"
+#include "mathematicalConstants.H"
 
 using namespace Foam;
 
@@ -422,4 +423,46 @@ TEST_CASE("structureProperties: wrong entries stop with the entry named")
         test::errorOf([&]{ p.model("structureModel rigid; rho 2700; E 68e9; nu 0.3;"); }),
         Catch::Contains("planeStrain")
     );
+}
+
+
+TEST_CASE("rotatingParticles: a panel at the wedge's deadrise angle bends as a horizontal one")
+{
+    // The wedge's panels are lattices rotated by 30 deg: the stencils, the
+    // surface normals and the loads must not depend on the orientation.
+    // The static deflection normal to the panel, rotated back, must equal
+    // the horizontal panel's to round-off of the linear solve.
+    const scalar q = 1, L = 0.3, H = 0.002, beta = 30*constant::mathematical::pi/180;
+    const label n = 2;
+    test::panel p(L, H, n);
+    test::panel r(L, H, n);
+    const scalar c = std::cos(beta), sn = std::sin(beta);
+    const vector2D t(c, sn), nrm(-sn, c);
+    forAll(r.X, i)
+    {
+        r.X[i] = p.X[i].x()*t + p.X[i].y()*nrm;
+    }
+    scalar w[2];
+    for (label k = 0; k < 2; ++k)
+    {
+        const test::panel& pk = k ? r : p;
+        const vector2D normal = k ? nrm : vector2D(0, 1);
+        autoPtr<structureModel> s(pk.model("structureModel rotatingParticles;" + aluminium));
+        List<vector2D> load(s->size(), Zero);
+        for (label i = 0; i < pk.nx; ++i)
+        {
+            load[pk.index(i, n - 1)] = -(q*pk.ds)*normal;
+        }
+        List<vector2D> u;
+        scalarList theta;
+        test::staticSolve(s(), pk, load, u, theta);
+        w[k] = tipDeflection(s(), pk);
+        if (k)
+        {
+            const label a = pk.index(pk.nx - 1, 0), b = pk.index(pk.nx - 1, 1);
+            w[k] = 0.5*((s->displacement(a) + s->displacement(b)) & normal);
+        }
+    }
+    INFO("horizontal " << w[0] << " m, at 30 deg " << w[1] << " m");
+    CHECK(w[1] == Approx(w[0]).epsilon(1e-6));
 }
