@@ -155,4 +155,22 @@ void Foam::structureModels::rigid::advance(const label nSteps)
 }
 
 
+void Foam::structureModels::rigid::restored()
+{
+    xc_ = Zero;
+    vc_ = Zero;
+    forAll(x_, i)
+    {
+        xc_ += x_[i];
+        vc_ += v_[i];
+    }
+    xc_ /= max(size(), label(1));
+    vc_ /= max(size(), label(1));
+    phi_ = size() ? theta_[0] : 0;
+    Omega_ = size() ? omega_[0] : 0;
+    place();
+    updateAcceleration();
+}
+
+
 // ************************************************************************* //
