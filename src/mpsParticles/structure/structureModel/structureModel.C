@@ -176,7 +176,8 @@ Foam::structureModel::structureModel
     f_(X.size(), Zero),
     clamped_(clamped),
     clampedVelocity_(Zero),
-    time_(0)
+    time_(0),
+    dtMax_(0)
 {
     if (rho_ <= 0)
     {
@@ -238,8 +239,14 @@ Foam::scalar Foam::structureModel::waveSpeed() const
 
 Foam::scalar Foam::structureModel::maxStableDeltaT() const
 {
-    const scalar w = maxEigenfrequency();
-    return w > 0 ? 2/w : GREAT;
+    // About the reference state, so computed once (an adjustable fluid
+    // step resets the sub-steps often)
+    if (dtMax_ <= 0)
+    {
+        const scalar w = maxEigenfrequency();
+        dtMax_ = w > 0 ? 2/w : GREAT;
+    }
+    return dtMax_;
 }
 
 
