@@ -173,21 +173,18 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
 
     Eigen::VectorXd b(nUnknowns);
     Eigen::VectorXd sol(nUnknowns);
+
+    // The matrix is written straight into compressed rows, in parallel:
+    // row sizes first, then each row filled (sorted by column) on its own
     ppeMatrix A(nUnknowns, nUnknowns);
-    Eigen::VectorXi rowNnz(nUnknowns);
-    for (label i = 0; i < nPart; ++i)
+    auto coupled = [&](const label j)
     {
-        const label row = unknown_[i];
-        if (row >= 0)
-        {
-            rowNnz[row] = surface[i] ? 1 : offsets[i + 1] - offsets[i] + 1;
-        }
-    }
-    A.reserve(rowNnz);
-
-    // A typical diagonal, for the rows of surface particles
-    const scalar surfaceDiag = lapCoeff*n0L_;
-
+        return
+            kind[j] != particleKind::dummy
+         && unknown_[j] >= 0 && !surface[j];
+    };
+    ppeMatrix::StorageIndex* outer = A.outerIndexPtr();
+    outer[0] = 0;
     for (label i = 0; i < nPart; ++i)
     {
         const label row = unknown_[i];
@@ -195,9 +192,36 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
         {
             continue;
         }
+        label nnz = 1;
+        if (!surface[i])
+        {
+            for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+            {
+                nnz += coupled(nbr[k]);
+            }
+        }
+        outer[row + 1] = outer[row] + nnz;
+    }
+    A.resizeNonZeros(outer[nUnknowns]);
+    ppeMatrix::StorageIndex* cols = A.innerIndexPtr();
+    double* vals = A.valuePtr();
+
+    // A typical diagonal, for the rows of surface particles
+    const scalar surfaceDiag = lapCoeff*n0L_;
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < nPart; ++i)
+    {
+        const label row = unknown_[i];
+        if (row < 0)
+        {
+            continue;
+        }
+        const label start = outer[row];
         if (surface[i])
         {
-            A.insert(row, row) = surfaceDiag;
+            cols[start] = row;
+            vals[start] = surfaceDiag;
             b[row] = 0;
             sol[row] = 0;
             continue;
@@ -205,6 +229,7 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
 
         scalar diag = diagComp;
         scalar div = 0;
+        label e = start;
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
             const label j = nbr[k];
@@ -214,9 +239,11 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
             }
             const scalar a = lapCoeff*wL_[k];
             diag += a;
-            if (unknown_[j] >= 0 && !surface[j])
+            if (coupled(j))
             {
-                A.insert(row, unknown_[j]) = -a;
+                cols[e] = unknown_[j];
+                vals[e] = -a;
+                ++e;
             }
             if (source_ == sourceType::mixed)
             {
@@ -224,7 +251,26 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
                 div += ((U[j] - U[i]) & r)*wN_[k]/max(magSqr(r), minR2_);
             }
         }
-        A.insert(row, row) = diag;
+        cols[e] = row;
+        vals[e] = diag;
+        ++e;
+
+        // Columns in increasing order within the row (insertion sort: a
+        // row has a dozen entries)
+        for (label m = start + 1; m < e; ++m)
+        {
+            const ppeMatrix::StorageIndex c = cols[m];
+            const double v = vals[m];
+            label l = m - 1;
+            while (l >= start && cols[l] > c)
+            {
+                cols[l + 1] = cols[l];
+                vals[l + 1] = vals[l];
+                --l;
+            }
+            cols[l + 1] = c;
+            vals[l + 1] = v;
+        }
 
         const scalar densitySource = rho_/sqr(dt)*(n0N_ - n[i])/n0N_;
         const scalar rhs =
@@ -234,7 +280,6 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
         b[row] = -rhs;
         sol[row] = p[i];
     }
-    A.makeCompressed();
 
     clockValue solveClock(true);
     const pressureSolver::performance perf = solver_->solve(A, b, sol);
