@@ -56,15 +56,24 @@ void Foam::mpsFluid::updateNeighbours()
     wG_.setSize(nPairs);
     wL_.setSize(nPairs);
 
+    // The three weights are one when the kernels are (the usual case):
+    // computed once
+    auto same = [this](const mpsKernel& k)
+    {
+        return k.type() == kN_->type() && k.re() == kN_->re();
+    };
+    const bool sameG = same(kG_()), sameL = same(kL_());
+
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < cloud_.size(); ++i)
     {
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
             const scalar r = max(mag(x[nbr[k]] - x[i]), minR_);
-            wN_[k] = kN_->w(r);
-            wG_[k] = kG_->w(r);
-            wL_[k] = kL_->w(r);
+            const scalar w = kN_->w(r);
+            wN_[k] = w;
+            wG_[k] = sameG ? w : kG_->w(r);
+            wL_[k] = sameL ? w : kL_->w(r);
         }
     }
 }
