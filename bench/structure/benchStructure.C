@@ -43,7 +43,10 @@ int main(int argc, char *argv[])
     argList::noParallel();
     argList::addOption("across", "list", "particles across 2 mm, default (2 5)");
     argList::addOption("steps", "n", "sub-steps to time, default 2000");
-    argList::addOption("model", "word", "structure model, default rotatingParticles");
+    argList::addOption
+    (
+        "model", "word", "structure model, default rotatingParticles"
+    );
     argList args(argc, argv, false, false);
 
     const labelList acrossList

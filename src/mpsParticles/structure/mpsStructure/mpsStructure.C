@@ -41,7 +41,10 @@ void Foam::mpsStructure::mapToCloud()
 
 void Foam::mpsStructure::setInitialVelocity(const dictionary& dict)
 {
-    const labelList particles(regionParticles(dict.get<word>("region"), dict));
+    const labelList particles
+    (
+        regionParticles(dict.get<word>("region"), dict)
+    );
     const vector2D origin(dict.get<vector2D>("origin"));
     vector2D a(dict.get<vector2D>("axis"));
     if (mag(a) < SMALL)
@@ -51,7 +54,10 @@ void Foam::mpsStructure::setInitialVelocity(const dictionary& dict)
     }
     a /= mag(a);
     const vector2D n(-a.y(), a.x());
-    autoPtr<Function1<vector>> profile(Function1<vector>::New("velocity", dict));
+    autoPtr<Function1<vector>> profile
+    (
+        Function1<vector>::New("velocity", dict)
+    );
     const scalar h = 1e-3*model_->spacing();
     for (const label k : particles)
     {
