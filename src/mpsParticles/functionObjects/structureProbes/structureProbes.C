@@ -59,7 +59,8 @@ Foam::functionObjects::structureProbes::structureProbes
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    logFiles(mesh_, name)
+    logFiles(mesh_, name),
+    headerWritten_(false)
 {
     read(dict);
 }
@@ -95,7 +96,7 @@ bool Foam::functionObjects::structureProbes::write()
     const structureModel& s = mpsStructure::New(mesh_).model();
     const List<vector2D>& X = s.X();
 
-    if (carriers_.empty())
+    if (!headerWritten_)
     {
         // The file is opened at the first write: a run that stops before
         // (bad input elsewhere) leaves the file of an earlier run as it was
@@ -104,7 +105,11 @@ bool Foam::functionObjects::structureProbes::write()
         {
             writeFileHeader();
         }
+        headerWritten_ = true;
+    }
 
+    if (carriers_.empty())
+    {
         carriers_.setSize(points_.size());
         forAll(points_, i)
         {

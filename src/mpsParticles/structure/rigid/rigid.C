@@ -110,10 +110,6 @@ Foam::structureModels::rigid::rigid
     {
         J_ += mass()*magSqr(X_[i] - Xc_) + rotationalInertia();
     }
-    if (dict_.found("deltaT"))
-    {
-        setDeltaT(dict_.get<scalar>("deltaT"));
-    }
     evaluate();
 }
 

@@ -277,10 +277,6 @@ Foam::structureModels::rotatingParticles::rotatingParticles
         }
     }
 
-    if (dict_.found("deltaT"))
-    {
-        setDeltaT(dict_.get<scalar>("deltaT"));
-    }
     evaluate();
 }
 

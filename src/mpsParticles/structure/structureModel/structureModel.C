@@ -63,7 +63,8 @@ Foam::scalar Foam::structureModel::maxEigenfrequency() const
     const scalar sm = ::sqrt(mass());
     const scalar sI = ::sqrt(rotationalInertia());
 
-    // Work on a copy in the reference state
+    // The state is perturbed in place and restored at the end (the cached
+    // result makes this a const query for the callers)
     structureModel& self = const_cast<structureModel&>(*this);
     const List<vector2D> x0(x_);
     const scalarList theta0(theta_);
@@ -140,6 +141,10 @@ Foam::scalar Foam::structureModel::maxEigenfrequency() const
 
     self.x_ = x0;
     self.theta_ = theta0;
+
+    // The models keep strains of their last evaluation: evaluate the
+    // restored state again so that no perturbed strain is left behind
+    internalForces(F0, T0);
 
     return ::sqrt(max(lambdaMax, scalar(0)));
 }

@@ -40,7 +40,15 @@ Foam::autoPtr<Foam::structureModel> Foam::structureModel::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<structureModel>(cstrIter()(dict, X, clamped, spacing));
+    autoPtr<structureModel> model(cstrIter()(dict, X, clamped, spacing));
+
+    // A structural step given as such is checked now; nSubSteps needs the
+    // fluid step (setSubSteps)
+    if (dict.found("deltaT"))
+    {
+        model->setDeltaT(dict.get<scalar>("deltaT"));
+    }
+    return model;
 }
 
 

@@ -124,10 +124,6 @@ Foam::structureModels::totalLagrangian::totalLagrangian
         B_[i] = inv(A);
     }
 
-    if (dict_.found("deltaT"))
-    {
-        setDeltaT(dict_.get<scalar>("deltaT"));
-    }
     evaluate();
 }
 
