@@ -103,40 +103,16 @@ void Foam::mpsFluid::predict(const scalar dt)
     UList<vector2D>& U = cloud_.U();
     const UList<particleKind>& kind = cloud_.kind();
 
-    nbrsV_.build(x, kV_->re());
-    const labelList& offsets = nbrsV_.offsets();
-    const labelList& nbr = nbrsV_.neighbours();
-    const scalar coeff = nu_*2*2/(lambdaV_*n0V_);
-    const label n = cloud_.size();
-
     // Viscous acceleration from the velocities at the start of the step
-    List<vector2D> acc(n, Zero);
+    List<vector2D> acc;
+    viscousAcceleration(acc);
 
     #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        if (kind[i] != particleKind::fluid)
-        {
-            continue;
-        }
-        vector2D lapU(Zero);
-        if (nu_ > 0)
-        {
-            for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-            {
-                const label j = nbr[k];
-                lapU += kV_->w(max(mag(x[j] - x[i]), minR_))*(U[j] - U[i]);
-            }
-        }
-        acc[i] = coeff*lapU + g_;
-    }
-
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
+    for (label i = 0; i < cloud_.size(); ++i)
     {
         if (kind[i] == particleKind::fluid)
         {
-            U[i] += dt*acc[i];
+            U[i] += dt*(acc[i] + g_);
             x[i] += dt*U[i];
         }
     }
@@ -501,6 +477,37 @@ Foam::mpsFluid::mpsFluid
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::mpsFluid::viscousAcceleration(List<vector2D>& acc)
+{
+    const UList<vector2D>& x = cloud_.x();
+    const UList<vector2D>& U = cloud_.U();
+    const UList<particleKind>& kind = cloud_.kind();
+    const label n = cloud_.size();
+
+    nbrsV_.build(x, kV_->re());
+    const labelList& offsets = nbrsV_.offsets();
+    const labelList& nbr = nbrsV_.neighbours();
+    const scalar coeff = nu_*2*2/(lambdaV_*n0V_);
+
+    acc.setSize(n);
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        vector2D lapU(Zero);
+        if (kind[i] == particleKind::fluid && nu_ > 0)
+        {
+            for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+            {
+                const label j = nbr[k];
+                lapU += kV_->w(max(mag(x[j] - x[i]), minR_))*(U[j] - U[i]);
+            }
+        }
+        acc[i] = coeff*lapU;
+    }
+}
+
 
 void Foam::mpsFluid::evaluate()
 {
