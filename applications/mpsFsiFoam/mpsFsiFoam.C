@@ -44,6 +44,7 @@ Description
 #include "mpsFluid.H"
 #include "mpsState.H"
 #include "mpsStructure.H"
+#include "fluidStructureInterface.H"
 #include "clockValue.H"
 #include <fenv.h>
 
@@ -119,7 +120,12 @@ int main(int argc, char *argv[])
             #include "checkDivergence.H"
         }
 
+        // Wall pressures to forces on the interface layer; the structure
+        // sub-cycled under them; the attached walls follow it and bound
+        // the fluid at the next step
+        coupling.transferPressure();
         structure.advance(runTime.value(), dt);
+        coupling.moveWalls();
 
         if (nFluidBefore && !info.ppeConverged)
         {
@@ -185,6 +191,11 @@ int main(int argc, char *argv[])
     {
         Info<< "Structure sub-steps: " << structure.totalSubSteps()
             << ", time " << structure.wallTime() << " s" << nl;
+    }
+    if (coupling.active())
+    {
+        Info<< "Force balance: largest |sum of the structural forces -"
+            << " fluid force| " << coupling.maxImbalance() << " N/m" << nl;
     }
 
     runTime.printExecutionTime(Info);

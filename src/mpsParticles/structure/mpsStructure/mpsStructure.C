@@ -178,6 +178,21 @@ Foam::mpsStructure::mpsStructure
     (
         dict_.getOrDefault<vector2D>("clampedVelocity", vector2D::zero)
     );
+    fluidForce_.setSize(n, Zero);
+    totalFluidForce_ = Zero;
+
+    if (dict_.found("bodyMotion"))
+    {
+        if (dict_.found("clampedVelocity") || !clampedRegions.size())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'bodyMotion' moves the clamped regions: it needs"
+                << " an entry 'clamped' (the regions it moves) and no entry"
+                << " 'clampedVelocity'" << exit(FatalIOError);
+        }
+        motion_ = bodyMotion::New(dict_, db.time().value());
+        model_->setClampedVelocity(motion_->velocity());
+    }
 
     if (dict_.found("initialVelocity"))
     {
@@ -249,9 +264,17 @@ void Foam::mpsStructure::advance(const scalar t, const scalar fluidDeltaT)
         fluidDeltaT_ = fluidDeltaT;
     }
 
-    // Loads at the end of the fluid step, held over the sub-steps
+    // The body's motion over the step, under the fluid force just solved
+    if (motion_.valid())
+    {
+        motion_->update(t, fluidDeltaT, totalFluidForce_);
+        model_->setClampedVelocity(motion_->velocity());
+    }
+
+    // Fluid forces and loads at the end of the fluid step, held over the
+    // sub-steps
     List<vector2D>& f = model_->externalForce();
-    f = Zero;
+    f = fluidForce_;
     const scalar ds = model_->spacing();
     for (const surfaceLoad& load : loads_)
     {
@@ -281,6 +304,17 @@ void Foam::mpsStructure::advance(const scalar t, const scalar fluidDeltaT)
 
     toCloud();
     wallTime_ += clock.elapsed();
+}
+
+
+void Foam::mpsStructure::setFluidForce(const UList<vector2D>& f)
+{
+    fluidForce_ = f;
+    totalFluidForce_ = Zero;
+    for (const vector2D& fk : fluidForce_)
+    {
+        totalFluidForce_ += fk;
+    }
 }
 
 
@@ -355,6 +389,12 @@ void Foam::mpsStructure::readRestart(const polyMesh& mesh)
     }
     m.setTime(mesh.time().value());
     m.restored();
+    if (motion_.valid())
+    {
+        const label k = m.clamped().find(true);
+        motion_->restart(m.v()[k]);
+        m.setClampedVelocity(motion_->velocity());
+    }
     toCloud();
     Info<< "Structure: continuing from the state written at time "
         << timeName << endl;

@@ -1,0 +1,358 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fluidStructureInterface.H"
+#include "neighbourList.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(fluidStructureInterface, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Rotation of v by the angle theta
+inline Foam::vector2D rotate(const Foam::scalar theta, const Foam::vector2D& v)
+{
+    const Foam::scalar c = ::cos(theta), s = ::sin(theta);
+    return Foam::vector2D(c*v.x() - s*v.y(), s*v.x() + c*v.y());
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fluidStructureInterface::mapToCloud()
+{
+    if (cloud_.size() != cloudSize_)
+    {
+        wallDummy_ = cloud_.select({particleKind::wall, particleKind::dummy});
+        cloudSize_ = cloud_.size();
+    }
+}
+
+
+void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
+{
+    const structureModel& model = structure_.model();
+    const List<vector2D>& X = model.X();
+    const scalar ds = model.spacing();
+    const label nS = X.size();
+
+    // Free faces of the structure: outward normal of each particle whose
+    // neighbours within 1.5 ds lie on one side (zero inside)
+    List<vector2D> faceNormal(nS, Zero);
+    {
+        const neighbourList nbrs(X, 1.5*ds);
+        forAll(X, s)
+        {
+            vector2D a(Zero);
+            for (label e = nbrs.offsets()[s]; e < nbrs.offsets()[s + 1]; ++e)
+            {
+                a += X[nbrs.neighbours()[e]] - X[s];
+            }
+            if (mag(a) > 0.5*ds)
+            {
+                faceNormal[s] = -a/mag(a);
+            }
+        }
+    }
+
+    // Anchors: the nearest structural particle in the reference state
+    anchor_.setSize(attached_.size());
+    offset_.setSize(attached_.size());
+    DynamicList<label> walls;
+    forAll(attached_, k)
+    {
+        const label i = wallDummy_[attached_[k]];
+        const vector2D& Xi = cloud_.x()[i];
+        scalar best = GREAT;
+        forAll(X, s)
+        {
+            const scalar d2 = magSqr(X[s] - Xi);
+            if (d2 < best)
+            {
+                best = d2;
+                anchor_[k] = s;
+            }
+        }
+        offset_[k] = Xi - X[anchor_[k]];
+        if (cloud_.kind()[i] == particleKind::wall)
+        {
+            walls.append(k);
+        }
+    }
+    walls_.transfer(walls);
+
+    // Interface layer: free-face particles facing a wall particle within
+    // l0 + ds
+    List<bool> inLayer(nS, false);
+    for (const label k : walls_)
+    {
+        const vector2D& Xw = cloud_.x()[wallDummy_[attached_[k]]];
+        forAll(X, s)
+        {
+            const vector2D d(Xw - X[s]);
+            if
+            (
+                mag(faceNormal[s]) > 0
+             && magSqr(d) < sqr(l0_ + ds)
+             && (d & faceNormal[s]) > 0
+            )
+            {
+                inLayer[s] = true;
+            }
+        }
+    }
+    layer_ = findIndices(inLayer, true);
+
+    // Weights of each wall particle over the layer within r_c
+    const scalar rc =
+        dict.getOrDefault<scalar>("pressureRadius", 1.5)*l0_;
+    if (!(rc > 0.5*(l0_ + ds)))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'pressureRadius' (" << rc/l0_ << " l0) must exceed"
+            << " the distance from a wall particle to the interface layer, "
+            << 0.5*(l0_ + ds)/l0_ << " l0" << exit(FatalIOError);
+    }
+    normal0_.setSize(walls_.size());
+    weightStart_.setSize(walls_.size() + 1);
+    DynamicList<label> particle;
+    DynamicList<scalar> weight;
+    forAll(walls_, m)
+    {
+        const label i = wallDummy_[attached_[walls_[m]]];
+        const vector2D& Xw = cloud_.x()[i];
+        weightStart_[m] = particle.size();
+        scalar sum = 0;
+        vector2D n(Zero);
+        for (const label s : layer_)
+        {
+            const scalar r = mag(Xw - X[s]);
+            if (r < rc)
+            {
+                const scalar w = rc/max(r, 1e-3*ds) - 1;
+                particle.append(s);
+                weight.append(w);
+                sum += w;
+                n += w*faceNormal[s];
+            }
+        }
+        if (sum <= 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Wall particle " << cloud_.id()[i] << " at " << Xw
+                << " of region " << cloud_.regionNames()[cloud_.region()[i]]
+                << " has no structural interface particle within"
+                << " pressureRadius " << rc/l0_ << " l0: the wall regions"
+                << " of 'walls' must lie on a free face of the structure"
+                << exit(FatalIOError);
+        }
+        for (label e = weightStart_[m]; e < particle.size(); ++e)
+        {
+            weight[e] /= sum;
+        }
+        normal0_[m] = n/max(mag(n), VSMALL);
+    }
+    weightStart_.last() = particle.size();
+    weightParticle_.transfer(particle);
+    weight_.transfer(weight);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fluidStructureInterface::fluidStructureInterface
+(
+    const objectRegistry& db,
+    mpsCloud& cloud,
+    mpsStructure& structure,
+    const dictionary& structureProperties,
+    const scalar l0
+)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            typeName,
+            db.time().constant(),
+            db,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            true
+        )
+    ),
+    cloud_(cloud),
+    structure_(structure),
+    l0_(l0),
+    cloudSize_(-1),
+    fluidForce_(Zero),
+    maxImbalance_(0)
+{
+    const dictionary* dictPtr = structureProperties.findDict("coupling");
+    if (!dictPtr)
+    {
+        return;
+    }
+    const dictionary& dict = *dictPtr;
+    if (!structure_.active())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling' needs structure particles: system/"
+            << "particleDict has no region of kind structure"
+            << exit(FatalIOError);
+    }
+
+    mapToCloud();
+
+    // Regions of kind wall or dummy, by name
+    labelHashSet regions;
+    const wordList names(dict.get<wordList>("walls"));
+    for (const word& name : names)
+    {
+        const label r = cloud_.regionNames().find(name);
+        bool found = false;
+        for (const label i : wallDummy_)
+        {
+            if (cloud_.region()[i] == r)
+            {
+                found = true;
+                break;
+            }
+        }
+        if (r < 0 || !found)
+        {
+            DynamicList<word> valid;
+            for (const label i : wallDummy_)
+            {
+                const word& n = cloud_.regionNames()[cloud_.region()[i]];
+                if (!valid.found(n))
+                {
+                    valid.append(n);
+                }
+            }
+            FatalIOErrorInFunction(dict)
+                << "Entry 'walls': " << name << " is not a region of wall"
+                << " particles in system/particleDict" << nl
+                << "Valid wall regions: " << valid << exit(FatalIOError);
+        }
+        regions.insert(r);
+    }
+
+    DynamicList<label> attached;
+    forAll(wallDummy_, k)
+    {
+        if (regions.found(cloud_.region()[wallDummy_[k]]))
+        {
+            attached.append(k);
+        }
+    }
+    attached_.transfer(attached);
+
+    setInterface(dict);
+    force_.setSize(structure_.model().size(), Zero);
+
+    Info<< "Fluid-structure interface: " << attached_.size()
+        << " wall and dummy particles attached, " << walls_.size()
+        << " wall particles on " << layer_.size()
+        << " interface-layer structural particles" << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fluidStructureInterface::transferPressure()
+{
+    if (!active())
+    {
+        return;
+    }
+    mapToCloud();
+    const scalarList& theta = structure_.model().theta();
+
+    force_ = Zero;
+    fluidForce_ = Zero;
+    forAll(walls_, m)
+    {
+        const label k = walls_[m];
+        const label i = wallDummy_[attached_[k]];
+        const vector2D n(rotate(theta[anchor_[k]], normal0_[m]));
+        const vector2D F(-cloud_.p()[i]*cloud_.spacing()[i]*n);
+        fluidForce_ += F;
+        for (label e = weightStart_[m]; e < weightStart_[m + 1]; ++e)
+        {
+            force_[weightParticle_[e]] += weight_[e]*F;
+        }
+    }
+
+    vector2D sum(Zero);
+    for (const vector2D& f : force_)
+    {
+        sum += f;
+    }
+    maxImbalance_ = max(maxImbalance_, mag(sum - fluidForce_));
+
+    structure_.setFluidForce(force_);
+}
+
+
+void Foam::fluidStructureInterface::moveWalls()
+{
+    if (!active())
+    {
+        return;
+    }
+    mapToCloud();
+    const structureModel& model = structure_.model();
+
+    forAll(attached_, k)
+    {
+        const label i = wallDummy_[attached_[k]];
+        const label s = anchor_[k];
+        const vector2D d(rotate(model.theta()[s], offset_[k]));
+        cloud_.x()[i] = model.x()[s] + d;
+        cloud_.U()[i] = model.v()[s] + model.omega()[s]*vector2D(-d.y(), d.x());
+    }
+}
+
+
+const Foam::fluidStructureInterface& Foam::fluidStructureInterface::New
+(
+    const objectRegistry& db
+)
+{
+    const fluidStructureInterface* ptr =
+        db.findObject<fluidStructureInterface>(typeName);
+    if (!ptr || !ptr->active())
+    {
+        FatalErrorInFunction
+            << "No fluid-structure interface in " << db.name() << ": this"
+            << " function object needs the mpsFsiFoam solver and an entry"
+            << " 'coupling' in constant/structureProperties"
+            << exit(FatalError);
+    }
+    return *ptr;
+}
+
+
+// ************************************************************************* //
