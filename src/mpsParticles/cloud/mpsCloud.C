@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsCloud.H"
+#include <algorithm>
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -105,6 +106,38 @@ void Foam::mpsCloud::subset(const UList<bool>& keep)
     spacing_.resize(j);
     id_.resize(j);
     surface_.resize(j);
+}
+
+
+void Foam::mpsCloud::sortByKind()
+{
+    labelList order(identity(size()));
+    std::stable_sort
+    (
+        order.begin(),
+        order.end(),
+        [this](const label a, const label b)
+        {
+            return int(kind_[a]) < int(kind_[b]);
+        }
+    );
+    auto reorder = [&order](auto& list)
+    {
+        auto copy(list);
+        forAll(order, i)
+        {
+            list[i] = copy[order[i]];
+        }
+    };
+    reorder(x_);
+    reorder(U_);
+    reorder(p_);
+    reorder(n_);
+    reorder(kind_);
+    reorder(region_);
+    reorder(spacing_);
+    reorder(id_);
+    reorder(surface_);
 }
 
 

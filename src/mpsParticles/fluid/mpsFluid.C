@@ -43,10 +43,22 @@ Foam::scalar Foam::mpsFluid::readPositive
 }
 
 
+Foam::label Foam::mpsFluid::nActive() const
+{
+    // The cloud holds its structure particles last (sortByKind)
+    label n = cloud_.size();
+    while (n > 0 && cloud_.kind()[n - 1] == particleKind::structure)
+    {
+        --n;
+    }
+    return n;
+}
+
+
 void Foam::mpsFluid::updateNeighbours()
 {
     const scalar radius = max(kN_->re(), max(kG_->re(), kL_->re()));
-    nbrs_.build(cloud_.x(), radius);
+    nbrs_.build(cloud_.x(), radius, nActive());
 
     const UList<vector2D>& x = cloud_.x();
     const labelList& offsets = nbrs_.offsets();
@@ -485,7 +497,7 @@ void Foam::mpsFluid::viscousAcceleration(List<vector2D>& acc)
     const UList<particleKind>& kind = cloud_.kind();
     const label n = cloud_.size();
 
-    nbrsV_.build(x, kV_->re());
+    nbrsV_.build(x, kV_->re(), nActive());
     const labelList& offsets = nbrsV_.offsets();
     const labelList& nbr = nbrsV_.neighbours();
     const scalar coeff = nu_*2*2/(lambdaV_*n0V_);

@@ -56,6 +56,26 @@ void Foam::neighbourList::build
 void Foam::neighbourList::build
 (
     const UList<vector2D>& x,
+    const scalar radius,
+    const label nActive
+)
+{
+    if (nActive >= x.size())
+    {
+        build(x, radius);
+        return;
+    }
+    const SubList<vector2D> active(x, nActive);
+    cells_.build(active, radius);
+    build(active, cells_, radius);
+    const label nPairs = offsets_[nActive];
+    offsets_.setSize(x.size() + 1, nPairs);
+}
+
+
+void Foam::neighbourList::build
+(
+    const UList<vector2D>& x,
     const cellLinkedList& cells,
     const scalar radius
 )

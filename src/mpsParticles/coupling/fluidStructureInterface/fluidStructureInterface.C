@@ -13,6 +13,7 @@ License
 
 #include "fluidStructureInterface.H"
 #include "neighbourList.H"
+#include "Map.H"
 #include "Time.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -42,11 +43,39 @@ inline Foam::vector2D rotate(const Foam::scalar theta, const Foam::vector2D& v)
 
 void Foam::fluidStructureInterface::mapToCloud()
 {
-    if (cloud_.size() != cloudSize_)
+    const UList<label>& id = cloud_.id();
+    if
+    (
+        cloud_.size() == cloudSize_
+     && id[attached_.first()] == attachedId_.first()
+     && id[attached_.last()] == attachedId_.last()
+    )
     {
-        wallDummy_ = cloud_.select({particleKind::wall, particleKind::dummy});
-        cloudSize_ = cloud_.size();
+        return;
     }
+    Map<label> indexOfId(2*attachedId_.size());
+    forAll(attachedId_, k)
+    {
+        indexOfId.insert(attachedId_[k], k);
+    }
+    label nFound = 0;
+    forAll(id, i)
+    {
+        const auto iter = indexOfId.cfind(id[i]);
+        if (iter.found())
+        {
+            attached_[iter.val()] = i;
+            ++nFound;
+        }
+    }
+    if (nFound != attachedId_.size())
+    {
+        FatalErrorInFunction
+            << "Only " << nFound << " of the " << attachedId_.size()
+            << " wall and dummy particles attached to the structure are in"
+            << " the cloud" << exit(FatalError);
+    }
+    cloudSize_ = cloud_.size();
 }
 
 
@@ -57,24 +86,39 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
     const scalar ds = model.spacing();
     const label nS = X.size();
 
-    // Free faces of the structure: outward normal of each particle whose
-    // neighbours within 1.5 ds lie on one side (zero inside)
-    List<vector2D> faceNormal(nS, Zero);
+    // Tangent of the structure at each particle: the principal direction
+    // of its neighbours within 1.5 ds (along a panel, one particle across
+    // or several)
+    const neighbourList nbrs(X, 1.5*ds);
+    List<vector2D> tangent(nS, vector2D(1, 0));
+    forAll(X, s)
     {
-        const neighbourList nbrs(X, 1.5*ds);
-        forAll(X, s)
+        scalar cxx = 0, cxy = 0, cyy = 0;
+        for (label e = nbrs.offsets()[s]; e < nbrs.offsets()[s + 1]; ++e)
         {
-            vector2D a(Zero);
-            for (label e = nbrs.offsets()[s]; e < nbrs.offsets()[s + 1]; ++e)
+            const vector2D d(X[nbrs.neighbours()[e]] - X[s]);
+            cxx += d.x()*d.x();
+            cxy += d.x()*d.y();
+            cyy += d.y()*d.y();
+        }
+        const scalar angle = 0.5*::atan2(2*cxy, cxx - cyy);
+        tangent[s] = vector2D(::cos(angle), ::sin(angle));
+    }
+
+    // Whether s is on a free face towards the point P: no neighbour of s
+    // lies more than ds/2 towards P
+    auto facing = [&](const label s, const vector2D& P)
+    {
+        const vector2D e((P - X[s])/max(mag(P - X[s]), VSMALL));
+        for (label k = nbrs.offsets()[s]; k < nbrs.offsets()[s + 1]; ++k)
+        {
+            if (((X[nbrs.neighbours()[k]] - X[s]) & e) > 0.5*ds)
             {
-                a += X[nbrs.neighbours()[e]] - X[s];
-            }
-            if (mag(a) > 0.5*ds)
-            {
-                faceNormal[s] = -a/mag(a);
+                return false;
             }
         }
-    }
+        return true;
+    };
 
     // Anchors: the nearest structural particle in the reference state
     anchor_.setSize(attached_.size());
@@ -82,7 +126,7 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
     DynamicList<label> walls;
     forAll(attached_, k)
     {
-        const label i = wallDummy_[attached_[k]];
+        const label i = attached_[k];
         const vector2D& Xi = cloud_.x()[i];
         scalar best = GREAT;
         forAll(X, s)
@@ -102,21 +146,15 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
     }
     walls_.transfer(walls);
 
-    // Interface layer: free-face particles facing a wall particle within
-    // l0 + ds
+    // Interface layer: particles on a free face towards a wall particle
+    // within l0 + ds
     List<bool> inLayer(nS, false);
     for (const label k : walls_)
     {
-        const vector2D& Xw = cloud_.x()[wallDummy_[attached_[k]]];
+        const vector2D& Xw = cloud_.x()[attached_[k]];
         forAll(X, s)
         {
-            const vector2D d(Xw - X[s]);
-            if
-            (
-                mag(faceNormal[s]) > 0
-             && magSqr(d) < sqr(l0_ + ds)
-             && (d & faceNormal[s]) > 0
-            )
+            if (magSqr(Xw - X[s]) < sqr(l0_ + ds) && facing(s, Xw))
             {
                 inLayer[s] = true;
             }
@@ -140,7 +178,7 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
     DynamicList<scalar> weight;
     forAll(walls_, m)
     {
-        const label i = wallDummy_[attached_[walls_[m]]];
+        const label i = attached_[walls_[m]];
         const vector2D& Xw = cloud_.x()[i];
         weightStart_[m] = particle.size();
         scalar sum = 0;
@@ -148,13 +186,19 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
         for (const label s : layer_)
         {
             const scalar r = mag(Xw - X[s]);
-            if (r < rc)
+            if (r < rc && facing(s, Xw))
             {
                 const scalar w = rc/max(r, 1e-3*ds) - 1;
                 particle.append(s);
                 weight.append(w);
                 sum += w;
-                n += w*faceNormal[s];
+                // The face normal at s, towards the wall particle
+                vector2D ns(-tangent[s].y(), tangent[s].x());
+                if ((ns & (Xw - X[s])) < 0)
+                {
+                    ns = -ns;
+                }
+                n += w*ns;
             }
         }
         if (sum <= 0)
@@ -223,16 +267,18 @@ Foam::fluidStructureInterface::fluidStructureInterface
             << exit(FatalIOError);
     }
 
-    mapToCloud();
-
     // Regions of kind wall or dummy, by name
+    const labelList wallDummy
+    (
+        cloud_.select({particleKind::wall, particleKind::dummy})
+    );
     labelHashSet regions;
     const wordList names(dict.get<wordList>("walls"));
     for (const word& name : names)
     {
         const label r = cloud_.regionNames().find(name);
         bool found = false;
-        for (const label i : wallDummy_)
+        for (const label i : wallDummy)
         {
             if (cloud_.region()[i] == r)
             {
@@ -243,7 +289,7 @@ Foam::fluidStructureInterface::fluidStructureInterface
         if (r < 0 || !found)
         {
             DynamicList<word> valid;
-            for (const label i : wallDummy_)
+            for (const label i : wallDummy)
             {
                 const word& n = cloud_.regionNames()[cloud_.region()[i]];
                 if (!valid.found(n))
@@ -260,14 +306,16 @@ Foam::fluidStructureInterface::fluidStructureInterface
     }
 
     DynamicList<label> attached;
-    forAll(wallDummy_, k)
+    for (const label i : wallDummy)
     {
-        if (regions.found(cloud_.region()[wallDummy_[k]]))
+        if (regions.found(cloud_.region()[i]))
         {
-            attached.append(k);
+            attached.append(i);
         }
     }
     attached_.transfer(attached);
+    attachedId_ = UIndirectList<label>(cloud_.id(), attached_);
+    cloudSize_ = cloud_.size();
 
     setInterface(dict);
     force_.setSize(structure_.model().size(), Zero);
@@ -295,7 +343,7 @@ void Foam::fluidStructureInterface::transferPressure()
     forAll(walls_, m)
     {
         const label k = walls_[m];
-        const label i = wallDummy_[attached_[k]];
+        const label i = attached_[k];
         const vector2D n(rotate(theta[anchor_[k]], normal0_[m]));
         const vector2D F(-cloud_.p()[i]*cloud_.spacing()[i]*n);
         fluidForce_ += F;
@@ -327,7 +375,7 @@ void Foam::fluidStructureInterface::moveWalls()
 
     forAll(attached_, k)
     {
-        const label i = wallDummy_[attached_[k]];
+        const label i = attached_[k];
         const label s = anchor_[k];
         const vector2D d(rotate(model.theta()[s], offset_[k]));
         cloud_.x()[i] = model.x()[s] + d;

@@ -230,6 +230,7 @@ void Foam::particleGenerator::generate
     }
 
     checkOverlaps(cloud);
+    cloud.sortByKind();
 }
 
 

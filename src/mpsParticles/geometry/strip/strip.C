@@ -124,12 +124,6 @@ Foam::particleShapes::strip::strip(const dictionary& dict)
             << exit(FatalIOError);
     }
 
-    if (offset_ < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'offset' must not be negative, got " << offset_
-            << exit(FatalIOError);
-    }
 }
 
 

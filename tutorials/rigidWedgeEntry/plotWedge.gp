@@ -1,0 +1,43 @@
+# Rigid wedge entry at V = 4 m/s against Wagner (1932) and von Karman
+# (1929) theory; deadrise is given by Allrun (gnuplot -e "deadrise = 30").
+# Wagner: wetted half-width c = (pi/2) V t/tan(b), force per unit depth
+# F = rho pi c dc/dt V = rho pi^3 V^3 t/(4 tan^2 b); von Karman (no pile-up):
+# c = V t/tan(b), F = rho pi V^3 t/tan^2 b. Both hold until the spray root
+# reaches the chine (half-width 0.3 cos b).
+rho = 1000.0; V = 4.0; L = 0.3
+b = deadrise*pi/180
+cdot = pi*V/(2*tan(b))
+tW = L*cos(b)/cdot
+tK = L*cos(b)*tan(b)/V
+FW(t) = t <= tW ? rho*pi**3*V**3*t/(4*tan(b)**2) : 1/0
+FK(t) = t <= tK ? rho*pi*V**3*t/tan(b)**2 : 1/0
+
+set terminal pngcairo size 900,600 font ",11"
+set output "force.png"
+set title sprintf("Rigid wedge, deadrise %g deg, V = 4 m/s: vertical force", deadrise)
+set xlabel "t [s]"
+set ylabel "F_y [kN/m]"
+set key top left
+set grid
+plot "postProcessing/structureForces/0/force.dat" u 1:($3/1e3) w l lw 1.5 lc rgb "#1f77b4" t "mpsFsiFoam", \
+     FW(x)/1e3 w l lw 2 dt 2 lc rgb "black" t "Wagner", \
+     FK(x)/1e3 w l lw 2 dt 3 lc rgb "#d62728" t "von Karman"
+
+# Pressure along the wall at three times: Wagner's outer solution
+#   p = rho V c cdot/sqrt(c^2 - x^2) - rho V^2 x^2/(2 (c^2 - x^2)),
+# up to its spray-root peak rho cdot^2/2 (59 kPa at 30 deg)
+pmax = 0.5*rho*cdot**2
+c(t) = cdot*t
+pW(x, t) = (abs(x) < c(t)) ? \
+    (rho*V*c(t)*cdot/sqrt(c(t)**2 - x**2) - 0.5*rho*V**2*x**2/(c(t)**2 - x**2)) : 1/0
+pWc(x, t) = abs(x) >= c(t) ? 1/0 : (pW(x, t) > pmax ? pmax : (pW(x, t) < 0 ? 0 : pW(x, t)))
+
+set output "pressure.png"
+set title sprintf("Pressure on the wedge's wall particles (deadrise %g deg)", deadrise)
+set xlabel "x - x_{keel} [m]"
+set ylabel "p [kPa]"
+set key top right
+set xrange [-0.3:0.3]
+set samples 1000
+plot for [t in "0.005 0.01 0.015"] "wallPressure_".t.".dat" u ($1 - 0.8):($3/1e3) w p pt 7 ps 0.6 t "t = ".t." s", \
+     for [t in "0.005 0.01 0.015"] pWc(x, t + 0)/1e3 w l lw 1.5 dt 2 t "Wagner, ".t." s"
