@@ -94,6 +94,7 @@ int main(int argc, char *argv[])
 
     clockValue wallClock(true);
     label stepi = 0;
+    scalar couplingTime = 0;
     word lastWritten(runTime.timeName());
 
     while (runTime.run())
@@ -123,9 +124,13 @@ int main(int argc, char *argv[])
         // Wall pressures to forces on the interface layer; the structure
         // sub-cycled under them; the attached walls follow it and bound
         // the fluid at the next step
+        clockValue couplingClock(true);
         coupling.transferPressure();
+        couplingTime += couplingClock.elapsed();
         structure.advance(runTime.value(), dt);
+        couplingClock.update();
         coupling.moveWalls();
+        couplingTime += couplingClock.elapsed();
 
         if (nFluidBefore && !info.ppeConverged)
         {
@@ -194,7 +199,8 @@ int main(int argc, char *argv[])
     }
     if (coupling.active())
     {
-        Info<< "Force balance: largest |sum of the structural forces -"
+        Info<< "Coupling time " << couplingTime << " s" << nl
+            << "Force balance: largest |sum of the structural forces -"
             << " fluid force| " << coupling.maxImbalance() << " N/m" << nl;
     }
 

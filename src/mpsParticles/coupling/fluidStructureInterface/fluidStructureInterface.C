@@ -105,14 +105,21 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
         tangent[s] = vector2D(::cos(angle), ::sin(angle));
     }
 
+    // Face normal at s towards the point P
+    auto normalTowards = [&](const label s, const vector2D& P)
+    {
+        const vector2D n(-tangent[s].y(), tangent[s].x());
+        return ((n & (P - X[s])) < 0) ? -n : n;
+    };
+
     // Whether s is on a free face towards the point P: no neighbour of s
-    // lies more than ds/2 towards P
+    // lies more than ds/2 off it along that face's normal
     auto facing = [&](const label s, const vector2D& P)
     {
-        const vector2D e((P - X[s])/max(mag(P - X[s]), VSMALL));
+        const vector2D n(normalTowards(s, P));
         for (label k = nbrs.offsets()[s]; k < nbrs.offsets()[s + 1]; ++k)
         {
-            if (((X[nbrs.neighbours()[k]] - X[s]) & e) > 0.5*ds)
+            if (((X[nbrs.neighbours()[k]] - X[s]) & n) > 0.5*ds)
             {
                 return false;
             }
@@ -192,13 +199,7 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
                 particle.append(s);
                 weight.append(w);
                 sum += w;
-                // The face normal at s, towards the wall particle
-                vector2D ns(-tangent[s].y(), tangent[s].x());
-                if ((ns & (Xw - X[s])) < 0)
-                {
-                    ns = -ns;
-                }
-                n += w*ns;
+                n += w*normalTowards(s, Xw);
             }
         }
         if (sum <= 0)
