@@ -52,10 +52,12 @@ set xlabel "x [m]"
 set ylabel "y [m]"
 set xrange [0.5:1.1]
 set yrange [0.45:0.8]
-set cbrange [-600:600]
-set palette defined (-1 "blue", 0 "white", 1 "red")
+set cbrange [-3000:3000]
+set palette defined (-1 "blue", 0 "#b0b0b0", 1 "red")
 unset key
-do for [t in "0 0.01 0.02 0.026"] {
+# The times written (a shorter run has fewer of them)
+times = system("for t in 0 0.01 0.02 0.026; do [ -s wedge_$t.dat ] && echo $t; done")
+do for [t in times] {
     set title "t = ".t." s"
     plot "wedge_".t.".dat" u 1:2:($3*1e6) w p pt 7 ps 0.25 lc palette
 }

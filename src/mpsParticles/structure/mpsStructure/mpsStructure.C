@@ -192,6 +192,10 @@ Foam::mpsStructure::mpsStructure
         }
         motion_ = bodyMotion::New(dict_, db.time().value());
         model_->setClampedVelocity(motion_->velocity());
+
+        // The body moves as a whole at the start (the wedge dropped onto
+        // the water), unless initialVelocity says otherwise below
+        model_->v() = motion_->velocity();
     }
 
     if (dict_.found("initialVelocity"))
