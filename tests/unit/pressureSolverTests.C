@@ -49,30 +49,48 @@ ppeMatrix poisson(const label nx, const label ny)
     return A;
 }
 
+//- The 60 x 30 PPE-shaped system with a smooth right-hand side, and its
+//  solution by a direct (LDL^T) solve
+struct ppeProblem
+{
+    ppeMatrix A;
+    Eigen::VectorXd b;
+    Eigen::VectorXd exact;
+
+    ppeProblem()
+    :
+        A(poisson(60, 30)),
+        b(A.rows())
+    {
+        for (label i = 0; i < b.size(); ++i)
+        {
+            b[i] = 1 + 0.5*std::sin(0.1*i);
+        }
+        const Eigen::SparseMatrix<double> Acol(A);
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct(Acol);
+        exact = direct.solve(b);
+    }
+};
+
+//- Every pressure solver's settings
+const std::initializer_list<std::string> allSolvers
+{
+    "type PCG; preconditioner diagonal;",
+    "type PCG; preconditioner incompleteCholesky;",
+    "type BoomerAMG;"
+};
+
 } // End anonymous namespace
 
 
 TEST_CASE("PCG solves the PPE-shaped system to its tolerance")
 {
-    const ppeMatrix A(poisson(60, 30));
-    Eigen::VectorXd b(A.rows());
-    for (label i = 0; i < b.size(); ++i)
-    {
-        b[i] = 1 + 0.5*std::sin(0.1*i);
-    }
-    const Eigen::SparseMatrix<double> Acol(A);
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct(Acol);
-    const Eigen::VectorXd exact = direct.solve(b);
+    const ppeProblem problem;
+    const ppeMatrix& A = problem.A;
+    const Eigen::VectorXd& b = problem.b;
+    const Eigen::VectorXd& exact = problem.exact;
 
-    for
-    (
-        const std::string settings
-      : {
-            "type PCG; preconditioner diagonal;",
-            "type PCG; preconditioner incompleteCholesky;",
-            "type BoomerAMG;"
-        }
-    )
+    for (const std::string settings : allSolvers)
     {
         INFO("solver " << settings);
         const dictionary d(test::dict
@@ -103,25 +121,12 @@ TEST_CASE("the tutorials' PPE tolerance 1e-6 gives the pressure to 1e-6")
     // (the worst case: runs warm-start from the last
     // pressure). 1e-6 of the pressure is far below the 5% the hydrostatic
     // test allows the discretisation.
-    const ppeMatrix A(poisson(60, 30));
-    Eigen::VectorXd b(A.rows());
-    for (label i = 0; i < b.size(); ++i)
-    {
-        b[i] = 1 + 0.5*std::sin(0.1*i);
-    }
-    const Eigen::SparseMatrix<double> Acol(A);
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct(Acol);
-    const Eigen::VectorXd exact = direct.solve(b);
+    const ppeProblem problem;
+    const ppeMatrix& A = problem.A;
+    const Eigen::VectorXd& b = problem.b;
+    const Eigen::VectorXd& exact = problem.exact;
 
-    for
-    (
-        const std::string settings
-      : {
-            "type PCG; preconditioner diagonal;",
-            "type PCG; preconditioner incompleteCholesky;",
-            "type BoomerAMG;"
-        }
-    )
+    for (const std::string settings : allSolvers)
     {
         INFO("solver " << settings);
         const dictionary d(test::dict
