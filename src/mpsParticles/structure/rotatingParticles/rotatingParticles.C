@@ -165,9 +165,11 @@ Foam::structureModels::rotatingParticles::rotatingParticles
     const labelList& cOff = candidates.offsets();
     const labelList& cNbr = candidates.neighbours();
 
-    // Stencils: the nearest neighbours, widened where degenerate
+    // Stencils: the nearest neighbours, widened where degenerate; a row
+    // one particle thick keeps its nearest neighbours on the line
     List<DynamicList<label>> stencil(n);
     List<tensor2D> Minv(n);
+    List<vector2D> rowTangent(n, Zero);
     for (label i = 0; i < n; ++i)
     {
         bool ok = false;
@@ -194,11 +196,36 @@ Foam::structureModels::rotatingParticles::rotatingParticles
         }
         if (!ok)
         {
+            // A row (collinear neighbours): the fit acts along the row
+            // only, M^-1 = t t/(t.M.t), a rod that stretches, shears and
+            // bends with the rotations (Timoshenko-like)
+            stencil[i].clear();
+            tensor2D M(tensor2D::zero);
+            for (label e = cOff[i]; e < cOff[i + 1]; ++e)
+            {
+                const label j = cNbr[e];
+                const vector2D d(X_[j] - X_[i]);
+                if (mag(d) < 1.1*ds_)
+                {
+                    stencil[i].append(j);
+                    M += (d*d)/magSqr(d);
+                }
+            }
+            if (stencil[i].size() && isotropy(M) < 1e-6)
+            {
+                const scalar a = 0.5*::atan2(2*M.xy(), M.xx() - M.yy());
+                const vector2D t(::cos(a), ::sin(a));
+                Minv[i] = (t*t)/(t & (M & t));
+                rowTangent[i] = t;
+                ok = true;
+            }
+        }
+        if (!ok)
+        {
             FatalErrorInFunction
                 << "Structural particle " << i << " at " << X_[i]
                 << " has no two independent neighbours within 2.1"
-                << " spacings: a structure needs at least two particles"
-                << " across" << exit(FatalError);
+                << " spacings and is not in a row" << exit(FatalError);
         }
 
         // Free-surface normal from the nearest ring
@@ -214,6 +241,11 @@ Foam::structureModels::rotatingParticles::rotatingParticles
         if (mag(sum) > 0.5*ds_)
         {
             normal_[i] = sum/mag(sum);
+        }
+        if (rowTangent[i] != vector2D::zero)
+        {
+            // Both faces free: the surface stress with n normal to the row
+            normal_[i] = vector2D(-rowTangent[i].y(), rowTangent[i].x());
         }
     }
 
