@@ -17,6 +17,7 @@
 #include "structureCases.H"
 #include "rotatingParticles.H"
 #include "rigid.H"
+#include "bodyMotion.H"
 #include "Random.H"
 #include "mathematicalConstants.H"
 
@@ -480,4 +481,70 @@ TEST_CASE("rotatingParticles: a panel at the wedge's deadrise angle bends as a h
     }
     INFO("horizontal " << w[0] << " m, at 30 deg " << w[1] << " m");
     CHECK(w[1] == Approx(w[0]).epsilon(1e-6));
+}
+
+
+TEST_CASE("body motion: prescribed follows its function, free obeys M dU/dt = F + M g")
+{
+    // prescribed: the velocity over a step is the function's value at the
+    // middle of the step (exact for a constant acceleration)
+    {
+        const dictionary d(test::dict
+        (
+            "bodyMotion { type prescribed;"
+            " velocity table ((0 (0 -4 0)) (1 (0 -2 0))); }"
+        ));
+        autoPtr<bodyMotion> m(bodyMotion::New(d, 0));
+        CHECK(m->velocity().y() == Approx(-4));
+        m->update(0.5, 0.1, vector2D(1e6, 1e6));      // force ignored
+        CHECK(m->velocity().y() == Approx(-4 + 2*0.45));
+        CHECK(m->velocity().x() == 0);
+    }
+
+    // free: a mass per unit depth under gravity and a force, from its
+    // initial velocity; the velocity change is the impulse over the mass
+    {
+        const dictionary d(test::dict
+        (
+            "bodyMotion { type free; mass 20; initialVelocity (0 -4);"
+            " g (0 -9.81); }"
+        ));
+        autoPtr<bodyMotion> m(bodyMotion::New(d, 0));
+        const scalar dt = 1e-3;
+        vector2D impulse(Zero);
+        for (label n = 0; n < 100; ++n)
+        {
+            const vector2D F(10*n, 500 + 3*n);
+            m->update((n + 1)*dt, dt, F);
+            impulse += dt*F;
+        }
+        const vector2D U(vector2D(0, -4) + impulse/20 + 0.1*vector2D(0, -9.81));
+        CHECK(m->velocity().x() == Approx(U.x()).epsilon(1e-12));
+        CHECK(m->velocity().y() == Approx(U.y()).epsilon(1e-12));
+    }
+
+    // bad entries
+    CHECK_THAT
+    (
+        test::errorOf([]
+        {
+            bodyMotion::New(test::dict("bodyMotion { type falling; }"), 0);
+        }),
+        Catch::Contains("falling") && Catch::Contains("prescribed") && Catch::Contains("free")
+    );
+    CHECK_THAT
+    (
+        test::errorOf([]
+        {
+            bodyMotion::New
+            (
+                test::dict
+                (
+                    "bodyMotion { type free; mass -1; initialVelocity (0 -4); }"
+                ),
+                0
+            );
+        }),
+        Catch::Contains("mass")
+    );
 }
