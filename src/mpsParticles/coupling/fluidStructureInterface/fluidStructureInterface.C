@@ -24,21 +24,6 @@ namespace Foam
 }
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- Rotation of v by the angle theta
-inline Foam::vector2D rotate(const Foam::scalar theta, const Foam::vector2D& v)
-{
-    const Foam::scalar c = ::cos(theta), s = ::sin(theta);
-    return Foam::vector2D(c*v.x() - s*v.y(), s*v.x() + c*v.y());
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::fluidStructureInterface::mapToCloud()
@@ -101,8 +86,7 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
             cxy += d.x()*d.y();
             cyy += d.y()*d.y();
         }
-        const scalar angle = 0.5*::atan2(2*cxy, cxx - cyy);
-        tangent[s] = vector2D(::cos(angle), ::sin(angle));
+        tangent[s] = structureModel::principalAxis(cxx, cxy, cyy);
     }
 
     // Face normal at s towards the point P
@@ -167,7 +151,7 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
             }
         }
     }
-    layer_ = findIndices(inLayer, true);
+    const labelList layer(findIndices(inLayer, true));
 
     // Weights of each wall particle over the layer within r_c
     const scalar rc =
@@ -190,7 +174,7 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
         weightStart_[m] = particle.size();
         scalar sum = 0;
         vector2D n(Zero);
-        for (const label s : layer_)
+        for (const label s : layer)
         {
             const scalar r = mag(Xw - X[s]);
             if (r < rc && facing(s, Xw))
@@ -221,6 +205,11 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
     weightStart_.last() = particle.size();
     weightParticle_.transfer(particle);
     weight_.transfer(weight);
+
+    Info<< "Fluid-structure interface: " << attached_.size()
+        << " wall and dummy particles attached, " << walls_.size()
+        << " wall particles on " << layer.size()
+        << " interface-layer structural particles" << nl << endl;
 }
 
 
@@ -320,11 +309,6 @@ Foam::fluidStructureInterface::fluidStructureInterface
 
     setInterface(dict);
     force_.setSize(structure_.model().size(), Zero);
-
-    Info<< "Fluid-structure interface: " << attached_.size()
-        << " wall and dummy particles attached, " << walls_.size()
-        << " wall particles on " << layer_.size()
-        << " interface-layer structural particles" << nl << endl;
 }
 
 
@@ -345,7 +329,10 @@ void Foam::fluidStructureInterface::transferPressure()
     {
         const label k = walls_[m];
         const label i = attached_[k];
-        const vector2D n(rotate(theta[anchor_[k]], normal0_[m]));
+        const vector2D n
+        (
+            structureModel::rotate(theta[anchor_[k]], normal0_[m])
+        );
         const vector2D F(-cloud_.p()[i]*cloud_.spacing()[i]*n);
         fluidForce_ += F;
         for (label e = weightStart_[m]; e < weightStart_[m + 1]; ++e)
@@ -354,14 +341,9 @@ void Foam::fluidStructureInterface::transferPressure()
         }
     }
 
-    vector2D sum(Zero);
-    for (const vector2D& f : force_)
-    {
-        sum += f;
-    }
-    maxImbalance_ = max(maxImbalance_, mag(sum - fluidForce_));
-
     structure_.setFluidForce(force_);
+    maxImbalance_ =
+        max(maxImbalance_, mag(structure_.fluidForce() - fluidForce_));
 }
 
 
@@ -378,7 +360,7 @@ void Foam::fluidStructureInterface::moveWalls()
     {
         const label i = attached_[k];
         const label s = anchor_[k];
-        const vector2D d(rotate(model.theta()[s], offset_[k]));
+        const vector2D d(structureModel::rotate(model.theta()[s], offset_[k]));
         cloud_.x()[i] = model.x()[s] + d;
         cloud_.U()[i] = model.v()[s] + model.omega()[s]*vector2D(-d.y(), d.x());
     }

@@ -140,10 +140,9 @@ bool Foam::functionObjects::structureProbes::write()
             for (const label k : carriers_[i])
             {
                 const vector2D r(points_[i] - X[k]);
-                const scalar c = ::cos(s.theta()[k]);
-                const scalar sn = ::sin(s.theta()[k]);
-                const vector2D Rr(c*r.x() - sn*r.y(), sn*r.x() + c*r.y());
-                u += s.displacement(k) + Rr - r;
+                u +=
+                    s.displacement(k)
+                  + structureModel::rotate(s.theta()[k], r) - r;
             }
             u /= carriers_[i].size();
             os  << tab << u.x() << tab << u.y();

@@ -467,9 +467,7 @@ Foam::vector2D Foam::mpsStructure::axis
         xy += d.x()*d.y();
         yy += d.y()*d.y();
     }
-    // principal direction of the largest eigenvalue
-    const scalar angle = 0.5*::atan2(2*xy, xx - yy);
-    vector2D a(::cos(angle), ::sin(angle));
+    vector2D a(structureModel::principalAxis(xx, xy, yy));
     if (((mean - end) & a) < 0)
     {
         a = -a;

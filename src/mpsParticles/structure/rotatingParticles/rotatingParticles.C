@@ -213,8 +213,7 @@ Foam::structureModels::rotatingParticles::rotatingParticles
             }
             if (stencil[i].size() && isotropy(M) < 1e-6)
             {
-                const scalar a = 0.5*::atan2(2*M.xy(), M.xx() - M.yy());
-                const vector2D t(::cos(a), ::sin(a));
+                const vector2D t(principalAxis(M.xx(), M.xy(), M.yy()));
                 Minv[i] = (t*t)/(t & (M & t));
                 rowTangent[i] = t;
                 ok = true;
