@@ -249,3 +249,28 @@ TEST_CASE("overlapping regions of the same kind are merged")
     );
     CHECK(c.size() == 100 + 50);
 }
+
+
+TEST_CASE("wall and dummy particles may lie over structure, fluid may not")
+{
+    // The structure is a particle system of its own: the fluid's boundary
+    // layers attached to it may cover it (spacing ratio 1), the fluid not
+    const std::string overStructure
+    (
+        "p { type box; kind structure; min (0 0); max (1 0.4); }"
+        "w { type box; kind wall; min (0 0); max (1 0.2); }"
+        "d { type box; kind dummy; min (0 0.2); max (1 0.4); }"
+    );
+    CHECK(generateError(overStructure) == "");
+    const mpsCloud c = generate(overStructure);
+    CHECK(c.size() == 50*20 + 10*2 + 10*2);
+    CHECK_THAT
+    (
+        generateError
+        (
+            "p { type box; kind structure; min (0 0); max (1 0.2); }"
+            "f { type box; kind fluid; min (0 0); max (1 0.2); }"
+        ),
+        Contains("overlap") && Contains("'p'") && Contains("'f'")
+    );
+}

@@ -17,6 +17,22 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+bool Foam::particleGenerator::boundaryOverStructure
+(
+    const particleKind a,
+    const particleKind b
+)
+{
+    const auto boundary = [](const particleKind k)
+    {
+        return k == particleKind::wall || k == particleKind::dummy;
+    };
+    return
+        (a == particleKind::structure && boundary(b))
+     || (b == particleKind::structure && boundary(a));
+}
+
+
 void Foam::particleGenerator::checkOverlaps(mpsCloud& cloud) const
 {
     const label n = cloud.size();
@@ -50,6 +66,10 @@ void Foam::particleGenerator::checkOverlaps(mpsCloud& cloud) const
             }
             const scalar d = mag(cloud.x()[j] - cloud.x()[i]);
             if (d >= 0.5*min(spacing[i], spacing[j]))
+            {
+                continue;
+            }
+            if (boundaryOverStructure(kind[i], kind[j]))
             {
                 continue;
             }
