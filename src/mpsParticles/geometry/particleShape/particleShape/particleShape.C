@@ -30,30 +30,4 @@ Foam::particleShape::particleShape(const dictionary& dict)
 {}
 
 
-// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
-
-Foam::autoPtr<Foam::particleShape> Foam::particleShape::New
-(
-    const dictionary& dict
-)
-{
-    const word shapeType(dict.get<word>("type"));
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(shapeType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "type",
-            shapeType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<particleShape>(cstrIter()(dict));
-}
-
-
 // ************************************************************************* //
