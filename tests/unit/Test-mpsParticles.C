@@ -10,6 +10,12 @@
 
 #include "error.H"
 
+// An OpenFOAM error that a test did not expect: report its message
+CATCH_TRANSLATE_EXCEPTION(const Foam::error& err)
+{
+    return err.message();
+}
+
 int main(int argc, char* argv[])
 {
     Foam::FatalError.throwExceptions();

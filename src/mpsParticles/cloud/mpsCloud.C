@@ -12,23 +12,127 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsCloud.H"
+#include "mpsCloudListField.H"
 #include <algorithm>
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::label Foam::mpsCloud::count(const particleKind k) const
+template<class Type>
+void Foam::mpsCloud::addField
+(
+    DynamicList<Type>& list,
+    const word& name,
+    const bool restart,
+    const Type& initial
+)
 {
-    label c = 0;
-    for (const particleKind ki : kind_)
-    {
-        if (ki == k)
-        {
-            ++c;
-        }
-    }
-    return c;
+    fields_.append
+    (
+        new mpsCloudListField<Type>(list, name, restart, initial)
+    );
 }
 
+
+void Foam::mpsCloud::addFields()
+{
+    // name, read back at a restart, value of a new particle
+    addField(x_, word::null, false, vector2D::zero);  // written as positions
+    addField(U_, "U", true, vector2D::zero);
+    addField(p_, "p", true, scalar(0));
+    addField(n_, "n", false, scalar(0));
+    addField(kind_, "kind", false, particleKind::fluid);
+    addField(region_, "region", false, label(-1));
+    addField(spacing_, word::null, false, scalar(0));
+    addField(id_, "id", false, label(-1));
+    addField(surface_, "freeSurface", false, false);
+}
+
+
+void Foam::mpsCloud::reorder(const labelUList& from)
+{
+    for (mpsCloudField& f : fields_)
+    {
+        f.reorder(from);
+    }
+    updateIndex();
+}
+
+
+void Foam::mpsCloud::updateIndex()
+{
+    start_ = 0;
+    forAll(kind_, i)
+    {
+        if (i > 0 && int(kind_[i]) < int(kind_[i - 1]))
+        {
+            FatalErrorInFunction
+                << "Particles out of kind order at index " << i
+                << exit(FatalError);
+        }
+        ++start_[int(kind_[i]) + 1];
+    }
+    for (int k = 1; k <= nParticleKinds; ++k)
+    {
+        start_[k] += start_[k - 1];
+    }
+
+    indexOfId_ = -1;
+    forAll(id_, i)
+    {
+        indexOfId_[id_[i]] = i;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::mpsCloud::mpsCloud()
+:
+    start_(0)
+{
+    addFields();
+}
+
+
+Foam::mpsCloud::mpsCloud(const mpsCloud& cloud)
+:
+    x_(cloud.x_),
+    U_(cloud.U_),
+    p_(cloud.p_),
+    n_(cloud.n_),
+    kind_(cloud.kind_),
+    region_(cloud.region_),
+    spacing_(cloud.spacing_),
+    id_(cloud.id_),
+    surface_(cloud.surface_),
+    start_(cloud.start_),
+    indexOfId_(cloud.indexOfId_),
+    regionNames_(cloud.regionNames_)
+{
+    addFields();
+}
+
+
+Foam::mpsCloud::mpsCloud(mpsCloud&& cloud)
+:
+    x_(std::move(cloud.x_)),
+    U_(std::move(cloud.U_)),
+    p_(std::move(cloud.p_)),
+    n_(std::move(cloud.n_)),
+    kind_(std::move(cloud.kind_)),
+    region_(std::move(cloud.region_)),
+    spacing_(std::move(cloud.spacing_)),
+    id_(std::move(cloud.id_)),
+    surface_(std::move(cloud.surface_)),
+    start_(cloud.start_),
+    indexOfId_(std::move(cloud.indexOfId_)),
+    regionNames_(std::move(cloud.regionNames_))
+{
+    addFields();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::labelList Foam::mpsCloud::select
 (
@@ -51,10 +155,131 @@ Foam::labelList Foam::mpsCloud::select
 }
 
 
+Foam::wordList Foam::mpsCloud::regionNames
+(
+    std::initializer_list<particleKind> kinds
+) const
+{
+    List<bool> holds(regionNames_.size(), false);
+    for (const label i : select(kinds))
+    {
+        holds[region_[i]] = true;
+    }
+    DynamicList<word> names;
+    forAll(holds, r)
+    {
+        if (holds[r])
+        {
+            names.append(regionNames_[r]);
+        }
+    }
+    return wordList(std::move(names));
+}
+
+
+Foam::labelList Foam::mpsCloud::indices
+(
+    const labelUList& ids,
+    const char* what
+) const
+{
+    labelList result(ids.size());
+    forAll(ids, k)
+    {
+        result[k] = index(ids[k]);
+        if (result[k] < 0)
+        {
+            FatalErrorInFunction
+                << "Particle id " << ids[k] << " (" << what << ") is not in"
+                << " the cloud" << exit(FatalError);
+        }
+    }
+    return result;
+}
+
+
 Foam::label Foam::mpsCloud::addRegion(const word& name)
 {
     regionNames_.append(name);
     return regionNames_.size() - 1;
+}
+
+
+void Foam::mpsCloud::append
+(
+    const UList<vector2D>& x,
+    const UList<particleKind>& k,
+    const label regioni,
+    const scalar spacing
+)
+{
+    const label n0 = size();
+    const label n = n0 + x.size();
+    for (mpsCloudField& f : fields_)
+    {
+        f.resize(n);
+    }
+    const label id0 = indexOfId_.size();
+    indexOfId_.resize(id0 + x.size());
+    forAll(x, j)
+    {
+        const label i = n0 + j;
+        x_[i] = x[j];
+        kind_[i] = k[j];
+        region_[i] = regioni;
+        spacing_[i] = spacing;
+        id_[i] = id0 + j;
+    }
+
+    // In kind order if no new kind is below the one before it
+    bool inOrder = true;
+    particleKind last = n0 ? kind_[n0 - 1] : particleKind::fluid;
+    for (const particleKind kj : k)
+    {
+        inOrder = inOrder && int(kj) >= int(last);
+        last = kj;
+    }
+
+    if (!inOrder)
+    {
+        // The new particles go after the others of their kind
+        labelList order(identity(n));
+        std::stable_sort
+        (
+            order.begin(),
+            order.end(),
+            [this](const label a, const label b)
+            {
+                return int(kind_[a]) < int(kind_[b]);
+            }
+        );
+        reorder(order);
+    }
+    else
+    {
+        // In order: the ranges after each new particle's kind grow, the
+        // new ids index the end
+        forAll(x, j)
+        {
+            for (int kk = int(k[j]) + 1; kk <= nParticleKinds; ++kk)
+            {
+                ++start_[kk];
+            }
+            indexOfId_[id0 + j] = n0 + j;
+        }
+    }
+}
+
+
+void Foam::mpsCloud::append
+(
+    const UList<vector2D>& x,
+    const particleKind k,
+    const label regioni,
+    const scalar spacing
+)
+{
+    append(x, List<particleKind>(x.size(), k), regioni, spacing);
 }
 
 
@@ -66,93 +291,25 @@ void Foam::mpsCloud::append
     const scalar spacing
 )
 {
-    x_.append(x);
-    U_.append(vector2D::zero);
-    p_.append(0);
-    n_.append(0);
-    kind_.append(k);
-    region_.append(regioni);
-    spacing_.append(spacing);
-    id_.append(id_.size());
-    surface_.append(false);
+    append(List<vector2D>(1, x), k, regioni, spacing);
 }
 
 
 void Foam::mpsCloud::subset(const UList<bool>& keep)
 {
-    label j = 0;
-    forAll(x_, i)
-    {
-        if (keep[i])
-        {
-            x_[j] = x_[i];
-            U_[j] = U_[i];
-            p_[j] = p_[i];
-            n_[j] = n_[i];
-            kind_[j] = kind_[i];
-            region_[j] = region_[i];
-            spacing_[j] = spacing_[i];
-            id_[j] = id_[i];
-            surface_[j] = surface_[i];
-            ++j;
-        }
-    }
-    x_.resize(j);
-    U_.resize(j);
-    p_.resize(j);
-    n_.resize(j);
-    kind_.resize(j);
-    region_.resize(j);
-    spacing_.resize(j);
-    id_.resize(j);
-    surface_.resize(j);
-}
-
-
-void Foam::mpsCloud::sortByKind()
-{
-    labelList order(identity(size()));
-    std::stable_sort
-    (
-        order.begin(),
-        order.end(),
-        [this](const label a, const label b)
-        {
-            return int(kind_[a]) < int(kind_[b]);
-        }
-    );
-    auto reorder = [&order](auto& list)
-    {
-        auto copy(list);
-        forAll(order, i)
-        {
-            list[i] = copy[order[i]];
-        }
-    };
-    reorder(x_);
-    reorder(U_);
-    reorder(p_);
-    reorder(n_);
-    reorder(kind_);
-    reorder(region_);
-    reorder(spacing_);
-    reorder(id_);
-    reorder(surface_);
+    reorder(findIndices(keep, true));
 }
 
 
 void Foam::mpsCloud::clear()
 {
-    x_.clear();
-    U_.clear();
-    p_.clear();
-    n_.clear();
-    kind_.clear();
-    region_.clear();
-    spacing_.clear();
-    id_.clear();
-    surface_.clear();
+    for (mpsCloudField& f : fields_)
+    {
+        f.clear();
+    }
+    indexOfId_.clear();
     regionNames_.clear();
+    start_ = 0;
 }
 
 

@@ -23,7 +23,6 @@ void Foam::lagrangianCloudReader::readCloud
 (
     const word& cloudName,
     mpsCloud& cloud,
-    const labelList& indexOfId,
     List<bool>& found
 ) const
 {
@@ -35,18 +34,9 @@ void Foam::lagrangianCloudReader::readCloud
         return;
     }
 
-    auto io = [&](const word& name)
-    {
-        return IOobject
-        (
-            name, timeName, local, mesh_,
-            IOobject::MUST_READ, IOobject::NO_WRITE, false
-        );
-    };
+    auto io = [&](const word& name) { return fieldIO(cloudName, name); };
 
     const IOField<label> id(io("id"));
-    const IOField<vector> U(io("U"));
-    const IOField<scalar> p(io("p"));
 
     // positions: "(x y z) celli" entries
     IFstream is(dir/"positions");
@@ -58,22 +48,21 @@ void Foam::lagrangianCloudReader::readCloud
             << exit(FatalIOError);
     }
     const label n = readLabel(is);
-    if (n != id.size() || n != U.size() || n != p.size())
+    if (n != id.size())
     {
         FatalIOErrorInFunction(is)
             << "Cloud " << cloudName << " at time " << timeName << " has "
-            << n << " positions but " << id.size() << " ids, " << U.size()
-            << " velocities and " << p.size() << " pressures"
+            << n << " positions but " << id.size() << " ids"
             << exit(FatalIOError);
     }
+    labelList index(n);
     is.readBegin("positions");
     for (label k = 0; k < n; ++k)
     {
         point x;
         label celli;
         is >> x >> celli;
-        const label i =
-            (id[k] >= 0 && id[k] < indexOfId.size()) ? indexOfId[id[k]] : -1;
+        const label i = cloud.index(id[k]);
         if (i < 0)
         {
             FatalIOErrorInFunction(is)
@@ -83,11 +72,18 @@ void Foam::lagrangianCloudReader::readCloud
                 << exit(FatalIOError);
         }
         cloud.x()[i] = vector2D(x.x(), x.y());
-        cloud.U()[i] = vector2D(U[k].x(), U[k].y());
-        cloud.p()[i] = p[k];
+        index[k] = i;
         found[i] = true;
     }
     is.readEnd("positions");
+
+    for (mpsCloudField& f : cloud.fields())
+    {
+        if (f.restart())
+        {
+            f.read(io(f.name()), index);
+        }
+    }
 }
 
 
@@ -100,6 +96,25 @@ Foam::lagrangianCloudReader::lagrangianCloudReader(const polyMesh& mesh)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::IOobject Foam::lagrangianCloudReader::fieldIO
+(
+    const word& cloudName,
+    const word& fieldName
+) const
+{
+    return IOobject
+    (
+        fieldName,
+        mesh_.time().timeName(),
+        cloud::prefix/cloudName,
+        mesh_,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+}
+
 
 bool Foam::lagrangianCloudReader::found() const
 {
@@ -120,23 +135,10 @@ bool Foam::lagrangianCloudReader::found() const
 
 void Foam::lagrangianCloudReader::read(mpsCloud& cloud) const
 {
-    // Ids are given at generation, before coincident particles are dropped:
-    // they are unique but not contiguous
-    label maxId = -1;
-    for (const label id : cloud.id())
-    {
-        maxId = max(maxId, id);
-    }
-    labelList indexOfId(maxId + 1, -1);
-    forAll(cloud.id(), i)
-    {
-        indexOfId[cloud.id()[i]] = i;
-    }
-
     List<bool> found(cloud.size(), false);
     for (const word& c : {"fluid", "wall", "structure"})
     {
-        readCloud(c, cloud, indexOfId, found);
+        readCloud(c, cloud, found);
     }
 
     label nMissing = 0;

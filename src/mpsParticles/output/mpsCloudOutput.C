@@ -12,7 +12,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsCloudOutput.H"
-#include "mpsStructure.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -25,11 +24,17 @@ Foam::mpsCloudOutput::mpsCloudOutput(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::mpsCloudOutput::write
+void Foam::mpsCloudOutput::addSource
 (
-    const mpsCloud& cloud,
-    const mpsStructure* structure
+    const word& cloudName,
+    const cloudFieldSource& source
 )
+{
+    sources_.append(std::make_pair(cloudName, &source));
+}
+
+
+void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
 {
     cloudFields clouds[] =
     {
@@ -38,18 +43,21 @@ void Foam::mpsCloudOutput::write
         cloudFields("structure", cloud, {particleKind::structure})
     };
 
-    if (structure)
+    for (cloudFields& c : clouds)
     {
-        structure->addFields(clouds[2]);
-    }
-
-    for (const cloudFields& c : clouds)
-    {
-        if (c.size())
+        if (!c.size())
         {
-            lagrangian_.write(c);
-            vtk_.write(c);
+            continue;
         }
+        for (const auto& source : sources_)
+        {
+            if (source.first == c.name())
+            {
+                source.second->addFields(c.ids(), c);
+            }
+        }
+        lagrangian_.write(c);
+        vtk_.write(c);
     }
 }
 

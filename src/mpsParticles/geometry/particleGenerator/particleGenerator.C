@@ -52,7 +52,15 @@ void Foam::particleGenerator::checkOverlaps(mpsCloud& cloud) const
     List<bool> keep(n, true);
     labelList nDropped(cloud.regionNames().size(), Zero);
 
-    for (label i = 0; i < n; ++i)
+    // In the order of generation (the ids): of two coinciding particles
+    // of one kind or region, the later is dropped
+    const UList<label>& id = cloud.id();
+    labelList byId(n);
+    forAll(id, i)
+    {
+        byId[id[i]] = i;
+    }
+    for (const label i : byId)
     {
         if (!keep[i])
         {
@@ -60,7 +68,7 @@ void Foam::particleGenerator::checkOverlaps(mpsCloud& cloud) const
         }
         for (const label j : nbrs[i])
         {
-            if (j < i || !keep[j])
+            if (id[j] < id[i] || !keep[j])
             {
                 continue;
             }
@@ -75,7 +83,6 @@ void Foam::particleGenerator::checkOverlaps(mpsCloud& cloud) const
             }
             if (kind[i] == kind[j] || region[i] == region[j])
             {
-                // Particles are appended region by region: j is the later
                 keep[j] = false;
                 ++nDropped[region[j]];
             }
@@ -220,6 +227,7 @@ void Foam::particleGenerator::generate
         const label regioni = cloud.addRegion(name);
         const label firstDummyLayer = nLayers - dummyLayers;
 
+        List<particleKind> kinds(points.size());
         forAll(points, i)
         {
             const vector2D& p = points[i];
@@ -240,17 +248,15 @@ void Foam::particleGenerator::generate
                     << exit(FatalIOError);
             }
 
-            const particleKind k =
+            kinds[i] =
                 (layers[i] >= firstDummyLayer && dummyLayers > 0)
               ? particleKind::dummy
               : kind;
-
-            cloud.append(p, k, regioni, spacing);
         }
+        cloud.append(points, kinds, regioni, spacing);
     }
 
     checkOverlaps(cloud);
-    cloud.sortByKind();
 }
 
 
