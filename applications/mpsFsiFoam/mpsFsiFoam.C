@@ -72,137 +72,38 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "createFields.H"
     #include "reportParticles.H"
-
-    mpsCloudOutput output(mesh);
-
-    if (restart)
-    {
-        Info<< "Continuing from time " << runTime.timeName() << nl << endl;
-    }
-    // The start time is written once the function objects are built (at
-    // the first runTime.run()), so that one with bad input stops the run
-    // before anything of an earlier run is overwritten
-    bool writeStart = !restart;
-
-    const bool adjustTimeStep =
-        runTime.controlDict().getOrDefault("adjustTimeStep", false);
-    const scalar maxCo = runTime.controlDict().getOrDefault<scalar>("maxCo", 0.2);
-    const scalar maxDeltaT =
-        runTime.controlDict().getOrDefault<scalar>("maxDeltaT", GREAT);
+    #include "readTimeControls.H"
 
     Info<< "Starting time loop" << nl << endl;
 
-    clockValue wallClock(true);
-    label stepi = 0;
-    scalar couplingTime = 0;
-    word lastWritten(runTime.timeName());
-
     while (runTime.run())
     {
-        if (writeStart)
-        {
-            Info<< "Writing time " << runTime.timeName() << nl << endl;
-            output.write(cloud, &structure);
-            writeStart = false;
-        }
+        #include "writeStartTime.H"
 
         ++runTime;
         ++stepi;
         const scalar dt = runTime.deltaTValue();
 
-        // Fluid first (when the case has fluid), then the structure,
-        // sub-cycled over the fluid step
-        const label nFluidBefore = cloud.count(particleKind::fluid);
-        const mpsFluid::stepInfo& info =
-            nFluidBefore ? fluid.step(dt) : fluid.info();
+        // Fluid first; then the coupling step: wall pressures to the
+        // structure, its sub-steps, the attached walls moved with it
+        const mpsFluid::stepInfo& info = fluid.step(dt);
+        #include "checkFluidStep.H"
 
-        if (nFluidBefore)
-        {
-            #include "checkDivergence.H"
-        }
-
-        // Wall pressures to forces on the interface layer; the structure
-        // sub-cycled under them; the attached walls follow it and bound
-        // the fluid at the next step
-        clockValue couplingClock(true);
-        coupling.transferPressure();
-        couplingTime += couplingClock.elapsed();
-        structure.advance(runTime.value(), dt);
-        couplingClock.update();
-        coupling.moveWalls();
-        couplingTime += couplingClock.elapsed();
-
-        if (nFluidBefore && !info.ppeConverged)
-        {
-            WarningInFunction
-                << "Time " << runTime.timeName() << ", step " << stepi
-                << ": the pressure solver did not reach its tolerance "
-                << fluid.solver().tolerance() << " in " << info.ppeIterations
-                << " iterations (relative residual " << info.ppeResidual
-                << ")" << endl;
-        }
-
-        const scalar Co = info.maxSpeed*dt/fluid.l0();
+        coupling.evolve(runTime.value(), dt);
 
         runTime.write();
         if (runTime.writeTime())
         {
-            output.write(cloud, &structure);
+            output.write(cloud);
             lastWritten = runTime.timeName();
         }
 
-        if (runTime.writeTime() || stepi % 100 == 0)
-        {
-            Info<< "Time = " << runTime.timeName()
-                << "  step " << stepi
-                << "  PPE " << info.ppeIterations << " it, residual "
-                << info.ppeResidual
-                << "  surface " << info.nSurface
-                << "  Co " << Co;
-            if (structure.active())
-            {
-                Info<< "  structure " << structure.nSubSteps()
-                    << " sub-steps";
-            }
-            Info<< "  wall " << wallClock.elapsed() << " s"
-                << (runTime.writeTime() ? "  (written)" : "") << endl;
-        }
-
-        if (adjustTimeStep)
-        {
-            const scalar dtCo =
-                info.maxSpeed > SMALL ? maxCo*fluid.l0()/info.maxSpeed : GREAT;
-            runTime.setDeltaT(min(min(dtCo, 1.2*dt), maxDeltaT));
-        }
+        #include "reportStep.H"
+        #include "setDeltaT.H"
     }
 
-    if (writeStart)
-    {
-        // endTime = startTime: nothing to run, only the particles to write
-        Info<< "Writing time " << runTime.timeName() << nl << endl;
-        output.write(cloud, &structure);
-    }
-
-    const mpsFluid::stepInfo& info = fluid.info();
-    const label nSteps = max(info.nSteps, label(1));
-    Info<< nl << "Fluid steps: " << info.nSteps
-        << ", mean PPE iterations " << scalar(info.totalPpeIterations)/nSteps
-        << nl
-        << "Time split [s]: neighbours " << info.timeNeighbours
-        << ", PPE assembly " << info.timeAssembly
-        << ", PPE solve " << info.timeSolve
-        << ", rest " << info.timeRest << nl;
-    if (structure.active())
-    {
-        Info<< "Structure sub-steps: " << structure.totalSubSteps()
-            << ", time " << structure.wallTime() << " s" << nl;
-    }
-    if (coupling.active())
-    {
-        Info<< "Coupling time " << couplingTime << " s" << nl
-            << "Force balance: largest |sum of the structural forces -"
-            << " fluid force| " << coupling.maxImbalance() << " N/m" << nl;
-    }
+    #include "writeStartTime.H"
+    #include "reportRun.H"
 
     runTime.printExecutionTime(Info);
 

@@ -45,13 +45,8 @@ Foam::scalar Foam::mpsFluid::readPositive
 
 Foam::label Foam::mpsFluid::nActive() const
 {
-    // The cloud holds its structure particles last (sortByKind)
-    label n = cloud_.size();
-    while (n > 0 && cloud_.kind()[n - 1] == particleKind::structure)
-    {
-        --n;
-    }
-    return n;
+    // The cloud holds the kinds in order, the structure's last
+    return cloud_.end(particleKind::dummy);
 }
 
 
@@ -131,16 +126,11 @@ void Foam::mpsFluid::predict(const scalar dt)
 }
 
 
-void Foam::mpsFluid::solvePressure(const scalar dt)
+Foam::label Foam::mpsFluid::setUnknowns()
 {
-    const UList<vector2D>& x = cloud_.x();
-    const UList<vector2D>& U = cloud_.U();
-    const UList<scalar>& n = cloud_.n();
     const UList<bool>& surface = cloud_.surface();
     const UList<particleKind>& kind = cloud_.kind();
     UList<scalar>& p = cloud_.p();
-    const labelList& offsets = nbrs_.offsets();
-    const labelList& nbr = nbrs_.neighbours();
     const label nPart = cloud_.size();
 
     // Unknowns: every fluid and wall particle; a surface particle's row is
@@ -163,17 +153,36 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
     }
     info_.nUnknowns = nSolved;
 
+    return nUnknowns;
+}
+
+
+void Foam::mpsFluid::assemblePressure
+(
+    const scalar dt,
+    ppeMatrix& A,
+    Eigen::VectorXd& b,
+    Eigen::VectorXd& sol
+) const
+{
+    const UList<vector2D>& x = cloud_.x();
+    const UList<vector2D>& U = cloud_.U();
+    const UList<scalar>& n = cloud_.n();
+    const UList<bool>& surface = cloud_.surface();
+    const UList<particleKind>& kind = cloud_.kind();
+    const UList<scalar>& p = cloud_.p();
+    const labelList& offsets = nbrs_.offsets();
+    const labelList& nbr = nbrs_.neighbours();
+    const label nPart = cloud_.size();
+    const label nUnknowns = A.rows();
+
     // Rows: -<lap p>_i + (alpha rho/dt^2) p_i = -RHS_i (positive definite)
     const scalar lapCoeff = 2*2/(lambdaL_*n0L_);
     const scalar divCoeff = 2/n0N_;
     const scalar diagComp = compressibility_*rho_/sqr(dt);
 
-    Eigen::VectorXd b(nUnknowns);
-    Eigen::VectorXd sol(nUnknowns);
-
     // The matrix is written straight into compressed rows, in parallel:
     // row sizes first, then each row filled (sorted by column) on its own
-    ppeMatrix A(nUnknowns, nUnknowns);
     auto coupled = [&](const label j)
     {
         return
@@ -278,6 +287,18 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
         sol[row] = p[i];
     }
 
+}
+
+
+void Foam::mpsFluid::solvePressure(const scalar dt)
+{
+    const label nUnknowns = setUnknowns();
+
+    Eigen::VectorXd b(nUnknowns);
+    Eigen::VectorXd sol(nUnknowns);
+    ppeMatrix A(nUnknowns, nUnknowns);
+    assemblePressure(dt, A, b, sol);
+
     clockValue solveClock(true);
     const pressureSolver::performance perf = solver_->solve(A, b, sol);
     lastSolveTime_ = solveClock.elapsed();
@@ -286,6 +307,12 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
     info_.ppeResidual = perf.residual;
     info_.ppeConverged = perf.converged;
 
+
+    // The solution to the particles (negative pressures clamped to zero
+    // where ppe.clampNegative says so); surface particles keep p = 0
+    const UList<bool>& surface = cloud_.surface();
+    UList<scalar>& p = cloud_.p();
+    const label nPart = cloud_.size();
     for (label i = 0; i < nPart; ++i)
     {
         const label row = unknown_[i];
@@ -534,6 +561,12 @@ void Foam::mpsFluid::evaluate()
 
 const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
 {
+    if (!cloud_.count(particleKind::fluid))
+    {
+        // A structure alone: nothing to do
+        return info_;
+    }
+
     clockValue clock(true);
     auto lap = [&clock](scalar& t)
     {

@@ -50,7 +50,7 @@ Foam::mpsState::mpsState
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-const Foam::mpsState& Foam::mpsState::New(const objectRegistry& db)
+const Foam::mpsState& Foam::mpsState::lookup(const objectRegistry& db)
 {
     const mpsState* ptr = db.findObject<mpsState>(typeName);
     if (!ptr)

@@ -12,9 +12,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fluidStructureInterface.H"
-#include "neighbourList.H"
-#include "Map.H"
 #include "Time.H"
+#include "clockValue.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -26,98 +25,22 @@ namespace Foam
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::fluidStructureInterface::mapToCloud()
-{
-    const UList<label>& id = cloud_.id();
-    if
-    (
-        cloud_.size() == cloudSize_
-     && id[attached_.first()] == attachedId_.first()
-     && id[attached_.last()] == attachedId_.last()
-    )
-    {
-        return;
-    }
-    Map<label> indexOfId(2*attachedId_.size());
-    forAll(attachedId_, k)
-    {
-        indexOfId.insert(attachedId_[k], k);
-    }
-    label nFound = 0;
-    forAll(id, i)
-    {
-        const auto iter = indexOfId.cfind(id[i]);
-        if (iter.found())
-        {
-            attached_[iter.val()] = i;
-            ++nFound;
-        }
-    }
-    if (nFound != attachedId_.size())
-    {
-        FatalErrorInFunction
-            << "Only " << nFound << " of the " << attachedId_.size()
-            << " wall and dummy particles attached to the structure are in"
-            << " the cloud" << exit(FatalError);
-    }
-    cloudSize_ = cloud_.size();
-}
-
-
 void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
 {
     const structureModel& model = structure_.model();
+    const structureGeometry& geometry = structure_.geometry();
     const List<vector2D>& X = model.X();
     const scalar ds = model.spacing();
     const label nS = X.size();
-
-    // Tangent of the structure at each particle: the principal direction
-    // of its neighbours within 1.5 ds (along a panel, one particle across
-    // or several)
-    const neighbourList nbrs(X, 1.5*ds);
-    List<vector2D> tangent(nS, vector2D(1, 0));
-    forAll(X, s)
-    {
-        scalar cxx = 0, cxy = 0, cyy = 0;
-        for (label e = nbrs.offsets()[s]; e < nbrs.offsets()[s + 1]; ++e)
-        {
-            const vector2D d(X[nbrs.neighbours()[e]] - X[s]);
-            cxx += d.x()*d.x();
-            cxy += d.x()*d.y();
-            cyy += d.y()*d.y();
-        }
-        tangent[s] = structureModel::principalAxis(cxx, cxy, cyy);
-    }
-
-    // Face normal at s towards the point P
-    auto normalTowards = [&](const label s, const vector2D& P)
-    {
-        const vector2D n(-tangent[s].y(), tangent[s].x());
-        return ((n & (P - X[s])) < 0) ? -n : n;
-    };
-
-    // Whether s is on a free face towards the point P: no neighbour of s
-    // lies more than ds/2 off it along that face's normal
-    auto facing = [&](const label s, const vector2D& P)
-    {
-        const vector2D n(normalTowards(s, P));
-        for (label k = nbrs.offsets()[s]; k < nbrs.offsets()[s + 1]; ++k)
-        {
-            if (((X[nbrs.neighbours()[k]] - X[s]) & n) > 0.5*ds)
-            {
-                return false;
-            }
-        }
-        return true;
-    };
+    const labelList attached(cloud_.indices(attachedId_, "attached wall"));
 
     // Anchors: the nearest structural particle in the reference state
-    anchor_.setSize(attached_.size());
-    offset_.setSize(attached_.size());
+    anchor_.setSize(attached.size());
+    offset_.setSize(attached.size());
     DynamicList<label> walls;
-    forAll(attached_, k)
+    forAll(attached, k)
     {
-        const label i = attached_[k];
+        const label i = attached[k];
         const vector2D& Xi = cloud_.x()[i];
         scalar best = GREAT;
         forAll(X, s)
@@ -142,10 +65,14 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
     List<bool> inLayer(nS, false);
     for (const label k : walls_)
     {
-        const vector2D& Xw = cloud_.x()[attached_[k]];
+        const vector2D& Xw = cloud_.x()[attached[k]];
         forAll(X, s)
         {
-            if (magSqr(Xw - X[s]) < sqr(l0_ + ds) && facing(s, Xw))
+            if
+            (
+                magSqr(Xw - X[s]) < sqr(l0_ + ds)
+             && geometry.facing(s, Xw)
+            )
             {
                 inLayer[s] = true;
             }
@@ -169,7 +96,7 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
     DynamicList<scalar> weight;
     forAll(walls_, m)
     {
-        const label i = attached_[walls_[m]];
+        const label i = attached[walls_[m]];
         const vector2D& Xw = cloud_.x()[i];
         weightStart_[m] = particle.size();
         scalar sum = 0;
@@ -177,13 +104,13 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
         for (const label s : layer)
         {
             const scalar r = mag(Xw - X[s]);
-            if (r < rc && facing(s, Xw))
+            if (r < rc && geometry.facing(s, Xw))
             {
                 const scalar w = rc/max(r, 1e-3*ds) - 1;
                 particle.append(s);
                 weight.append(w);
                 sum += w;
-                n += w*normalTowards(s, Xw);
+                n += w*geometry.normalTowards(s, Xw);
             }
         }
         if (sum <= 0)
@@ -206,10 +133,42 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
     weightParticle_.transfer(particle);
     weight_.transfer(weight);
 
-    Info<< "Fluid-structure interface: " << attached_.size()
+    Info<< "Fluid-structure interface: " << attached.size()
         << " wall and dummy particles attached, " << walls_.size()
         << " wall particles on " << layer.size()
         << " interface-layer structural particles" << nl << endl;
+}
+
+
+void Foam::fluidStructureInterface::transferPressure()
+{
+    const labelList attached(cloud_.indices(attachedId_, "attached wall"));
+    const scalarList& theta = structure_.model().theta();
+
+    force_ = Zero;
+    fluidForce_ = Zero;
+    forAll(walls_, m)
+    {
+        const label k = walls_[m];
+        const label i = attached[k];
+        const vector2D n
+        (
+            structureModel::rotate(theta[anchor_[k]], normal0_[m])
+        );
+        const vector2D F(-cloud_.p()[i]*cloud_.spacing()[i]*n);
+        fluidForce_ += F;
+        for (label e = weightStart_[m]; e < weightStart_[m + 1]; ++e)
+        {
+            force_[weightParticle_[e]] += weight_[e]*F;
+        }
+    }
+
+    vector2D sum(Zero);
+    for (const vector2D& f : force_)
+    {
+        sum += f;
+    }
+    maxImbalance_ = max(maxImbalance_, mag(sum - fluidForce_));
 }
 
 
@@ -239,9 +198,9 @@ Foam::fluidStructureInterface::fluidStructureInterface
     cloud_(cloud),
     structure_(structure),
     l0_(l0),
-    cloudSize_(-1),
     fluidForce_(Zero),
-    maxImbalance_(0)
+    maxImbalance_(0),
+    time_(0)
 {
     const dictionary* dictPtr = structureProperties.findDict("coupling");
     if (!dictPtr)
@@ -262,36 +221,22 @@ Foam::fluidStructureInterface::fluidStructureInterface
     (
         cloud_.select({particleKind::wall, particleKind::dummy})
     );
+    const wordList valid
+    (
+        cloud_.regionNames({particleKind::wall, particleKind::dummy})
+    );
     labelHashSet regions;
     const wordList names(dict.get<wordList>("walls"));
     for (const word& name : names)
     {
-        const label r = cloud_.regionNames().find(name);
-        bool found = false;
-        for (const label i : wallDummy)
+        if (!valid.found(name))
         {
-            if (cloud_.region()[i] == r)
-            {
-                found = true;
-                break;
-            }
-        }
-        if (r < 0 || !found)
-        {
-            DynamicList<word> valid;
-            for (const label i : wallDummy)
-            {
-                const word& n = cloud_.regionNames()[cloud_.region()[i]];
-                if (!valid.found(n))
-                {
-                    valid.append(n);
-                }
-            }
             FatalIOErrorInFunction(dict)
                 << "Entry 'walls': " << name << " is not a region of wall"
                 << " particles in system/particleDict" << nl
                 << "Valid wall regions: " << valid << exit(FatalIOError);
         }
+        const label r = cloud_.regionIndex(name);
         regions.insert(r);
     }
 
@@ -303,9 +248,7 @@ Foam::fluidStructureInterface::fluidStructureInterface
             attached.append(i);
         }
     }
-    attached_.transfer(attached);
-    attachedId_ = UIndirectList<label>(cloud_.id(), attached_);
-    cloudSize_ = cloud_.size();
+    attachedId_ = UIndirectList<label>(cloud_.id(), attached);
 
     setInterface(dict);
     force_.setSize(structure_.model().size(), Zero);
@@ -314,36 +257,27 @@ Foam::fluidStructureInterface::fluidStructureInterface
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fluidStructureInterface::transferPressure()
+void Foam::fluidStructureInterface::evolve
+(
+    const scalar t,
+    const scalar deltaT
+)
 {
     if (!active())
     {
+        structure_.advance(t, deltaT, List<vector2D>());
         return;
     }
-    mapToCloud();
-    const scalarList& theta = structure_.model().theta();
 
-    force_ = Zero;
-    fluidForce_ = Zero;
-    forAll(walls_, m)
-    {
-        const label k = walls_[m];
-        const label i = attached_[k];
-        const vector2D n
-        (
-            structureModel::rotate(theta[anchor_[k]], normal0_[m])
-        );
-        const vector2D F(-cloud_.p()[i]*cloud_.spacing()[i]*n);
-        fluidForce_ += F;
-        for (label e = weightStart_[m]; e < weightStart_[m + 1]; ++e)
-        {
-            force_[weightParticle_[e]] += weight_[e]*F;
-        }
-    }
+    clockValue clock(true);
+    transferPressure();
+    time_ += clock.elapsed();
 
-    structure_.setFluidForce(force_);
-    maxImbalance_ =
-        max(maxImbalance_, mag(structure_.fluidForce() - fluidForce_));
+    structure_.advance(t, deltaT, force_);
+
+    clock.update();
+    moveWalls();
+    time_ += clock.elapsed();
 }
 
 
@@ -353,12 +287,12 @@ void Foam::fluidStructureInterface::moveWalls()
     {
         return;
     }
-    mapToCloud();
+    const labelList attached(cloud_.indices(attachedId_, "attached wall"));
     const structureModel& model = structure_.model();
 
-    forAll(attached_, k)
+    forAll(attached, k)
     {
-        const label i = attached_[k];
+        const label i = attached[k];
         const label s = anchor_[k];
         const vector2D d(structureModel::rotate(model.theta()[s], offset_[k]));
         cloud_.x()[i] = model.x()[s] + d;
@@ -367,7 +301,7 @@ void Foam::fluidStructureInterface::moveWalls()
 }
 
 
-const Foam::fluidStructureInterface& Foam::fluidStructureInterface::New
+const Foam::fluidStructureInterface& Foam::fluidStructureInterface::lookup
 (
     const objectRegistry& db
 )

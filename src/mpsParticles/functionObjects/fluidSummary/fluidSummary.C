@@ -87,7 +87,7 @@ bool Foam::functionObjects::fluidSummary::execute()
 
 bool Foam::functionObjects::fluidSummary::write()
 {
-    const mpsState& state = mpsState::New(mesh_);
+    const mpsState& state = mpsState::lookup(mesh_);
     const mpsCloud& cloud = state.cloud();
     const mpsFluid& fluid = state.fluid();
     const mpsFluid::stepInfo& info = fluid.info();

@@ -31,7 +31,7 @@ namespace functionObjects
 
 void Foam::functionObjects::strainProbes::locate()
 {
-    const mpsStructure& structure = mpsStructure::New(mesh_);
+    const mpsStructure& structure = mpsStructure::lookup(mesh_);
     const structureModel& s = structure.model();
     const List<vector2D>& X = s.X();
     const scalar ds = s.spacing();
@@ -39,8 +39,11 @@ void Foam::functionObjects::strainProbes::locate()
     for (gauge& g : gauges_)
     {
         const labelList panel(structure.regionParticles(g.region, g.dict));
-        g.axis = structure.axis(panel, g.end);
-        const labelList face(structure.surfaceLayer(panel, g.normal));
+        g.axis = structure.geometry().axis(panel, g.end);
+        const labelList face
+        (
+            structure.geometry().surfaceLayer(panel, g.normal)
+        );
 
         // the nearest face particles below and above the distance
         scalar below = -GREAT, above = GREAT;
@@ -191,7 +194,7 @@ bool Foam::functionObjects::strainProbes::write()
         }
         headerWritten_ = true;
     }
-    const structureModel& s = mpsStructure::New(mesh_).model();
+    const structureModel& s = mpsStructure::lookup(mesh_).model();
     const scalar dn = 0.5*s.spacing();
 
     if (Pstream::master())

@@ -56,7 +56,8 @@ bool Foam::functionObjects::structureForces::read(const dictionary& dict)
 
 bool Foam::functionObjects::structureForces::write()
 {
-    const fluidStructureInterface& fsi = fluidStructureInterface::New(mesh_);
+    const fluidStructureInterface& fsi =
+        fluidStructureInterface::lookup(mesh_);
 
     if (!headerWritten_)
     {

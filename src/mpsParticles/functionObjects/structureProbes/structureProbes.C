@@ -93,7 +93,7 @@ bool Foam::functionObjects::structureProbes::read(const dictionary& dict)
 
 bool Foam::functionObjects::structureProbes::write()
 {
-    const structureModel& s = mpsStructure::New(mesh_).model();
+    const structureModel& s = mpsStructure::lookup(mesh_).model();
     const List<vector2D>& X = s.X();
 
     if (!headerWritten_)

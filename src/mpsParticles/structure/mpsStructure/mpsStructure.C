@@ -12,13 +12,10 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsStructure.H"
-#include "cloudFields.H"
-#include "neighbourList.H"
+#include "lagrangianCloudReader.H"
 #include "Time.H"
 #include "clockValue.H"
-#include "Map.H"
 #include "IOField.H"
-#include "cloud.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -30,12 +27,48 @@ namespace Foam
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::mpsStructure::mapToCloud()
+Foam::List<bool> Foam::mpsStructure::readClamped() const
 {
-    // Structure particles are never removed and the cloud keeps the order
-    // of the particles it keeps, so the k-th structure particle of the
-    // cloud is always particle k of the model
-    cloudIndex_ = cloud_.select({particleKind::structure});
+    List<bool> clamped(ids_.size(), false);
+    const wordList names
+    (
+        dict_.getOrDefault<wordList>("clamped", wordList())
+    );
+    for (const word& name : names)
+    {
+        const label r = regionIndex(name, dict_);
+        forAll(region_, k)
+        {
+            clamped[k] = clamped[k] || region_[k] == r;
+        }
+    }
+    return clamped;
+}
+
+
+void Foam::mpsStructure::readBodyMotion(const scalar startTime)
+{
+    if (!dict_.found("bodyMotion"))
+    {
+        return;
+    }
+    if
+    (
+        dict_.found("clampedVelocity")
+     || dict_.getOrDefault<wordList>("clamped", wordList()).empty()
+    )
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'bodyMotion' moves the clamped regions: it needs"
+            << " an entry 'clamped' (the regions it moves) and no entry"
+            << " 'clampedVelocity'" << exit(FatalIOError);
+    }
+    motion_ = bodyMotion::New(dict_, startTime);
+    model_->setClampedVelocity(motion_->velocity());
+
+    // The body moves as a whole at the start (the wedge dropped onto the
+    // water), unless initialVelocity says otherwise
+    model_->v() = motion_->velocity();
 }
 
 
@@ -77,29 +110,76 @@ void Foam::mpsStructure::setInitialVelocity(const dictionary& dict)
 }
 
 
+void Foam::mpsStructure::readLoads(const dictionary& loadsDict)
+{
+    for (const entry& e : loadsDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(loadsDict)
+                << "Entry " << e.keyword() << " of loads must be a"
+                << " dictionary (region, normal, pressure)"
+                << exit(FatalIOError);
+        }
+        const dictionary& d = e.dict();
+        surfaceLoad* load = new surfaceLoad;
+        load->name = e.keyword();
+        load->normal = d.get<vector2D>("normal");
+        if (mag(load->normal) < SMALL)
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry 'normal' of load " << e.keyword()
+                << " must not be zero" << exit(FatalIOError);
+        }
+        load->normal /= mag(load->normal);
+        load->particles = geometry_->surfaceLayer
+        (
+            regionParticles(d.get<word>("region"), d),
+            load->normal
+        );
+        load->pressure = Function1<scalar>::New("pressure", d);
+        Info<< "Structure load " << load->name << ": pressure on "
+            << load->particles.size() << " particles of region "
+            << d.get<word>("region") << " facing " << load->normal
+            << endl;
+        loads_.append(load);
+    }
+}
+
+
 Foam::label Foam::mpsStructure::regionIndex
 (
     const word& name,
     const dictionary& dict
 ) const
 {
-    DynamicList<word> valid;
-    forAll(cloud_.regionNames(), r)
+    const wordList valid(cloud_.regionNames({particleKind::structure}));
+    if (!valid.found(name))
     {
-        if (region_.found(r))
+        FatalIOErrorInFunction(dict)
+            << "Unknown structure region " << name << " in " << dict.name()
+            << nl << "Valid structure regions of system/particleDict: "
+            << valid << exit(FatalIOError);
+    }
+    return cloud_.regionIndex(name);
+}
+
+
+void Foam::mpsStructure::checkFinite(const scalar t) const
+{
+    forAll(model_->x(), k)
+    {
+        const vector2D& x = model_->x()[k];
+        if (!std::isfinite(x.x()) || !std::isfinite(x.y()))
         {
-            if (cloud_.regionNames()[r] == name)
-            {
-                return r;
-            }
-            valid.append(cloud_.regionNames()[r]);
+            FatalErrorInFunction
+                << "The structure diverged in the fluid step ending at"
+                << " time " << t << ": particle " << k << " (reference "
+                << model_->X()[k] << ") is not finite. Nothing of this"
+                << " step was written; the last written time is intact."
+                << exit(FatalError);
         }
     }
-    FatalIOErrorInFunction(dict)
-        << "Unknown structure region " << name << " in " << dict.name()
-        << nl << "Valid structure regions of system/particleDict: "
-        << valid << exit(FatalIOError);
-    return -1;
 }
 
 
@@ -132,113 +212,48 @@ Foam::mpsStructure::mpsStructure
     totalSubSteps_(0),
     wallTime_(0)
 {
-    mapToCloud();
-    if (cloudIndex_.empty())
+    const label begin = cloud_.begin(particleKind::structure);
+    const label n = cloud_.count(particleKind::structure);
+    if (n == 0)
     {
         return;
     }
     if (!dict_.found("structureModel"))
     {
         FatalIOErrorInFunction(dict_)
-            << "The case has " << cloudIndex_.size() << " structure"
-            << " particles: constant/structureProperties needs an entry"
+            << "The case has " << n << " structure particles:"
+            << " constant/structureProperties needs an entry"
             << " structureModel (rotatingParticles, totalLagrangian, rigid)"
             << exit(FatalIOError);
     }
 
-    const label n = cloudIndex_.size();
-    List<vector2D> X(n);
-    region_.setSize(n);
-    scalar ds = 0;
-    forAll(cloudIndex_, k)
+    // The structure's particles in the cloud's order, by id
+    ids_ = SubList<label>(cloud_.id(), n, begin);
+    List<vector2D> X(SubList<vector2D>(cloud_.x(), n, begin));
+    region_ = SubList<label>(cloud_.region(), n, begin);
+    forAll(ids_, k)
     {
-        const label i = cloudIndex_[k];
-        X[k] = cloud_.x()[i];
-        region_[k] = cloud_.region()[i];
-        ds = cloud_.spacing()[i];
+        modelIndex_.insert(ids_[k], k);
     }
+    const scalar ds = cloud_.spacing()[begin + n - 1];
 
-    // Clamped regions
-    List<bool> clamped(n, false);
-    const wordList clampedRegions
-    (
-        dict_.getOrDefault<wordList>("clamped", wordList())
-    );
-    for (const word& name : clampedRegions)
-    {
-        const label r = regionIndex(name, dict_);
-        forAll(region_, k)
-        {
-            clamped[k] = clamped[k] || region_[k] == r;
-        }
-    }
-
+    const List<bool> clamped(readClamped());
     model_ = structureModel::New(dict_, X, clamped, ds);
+    geometry_.reset(new structureGeometry(model_->X(), ds));
     model_->setClampedVelocity
     (
         dict_.getOrDefault<vector2D>("clampedVelocity", vector2D::zero)
     );
-    fluidForce_.setSize(n, Zero);
-    totalFluidForce_ = Zero;
 
-    if (dict_.found("bodyMotion"))
-    {
-        if (dict_.found("clampedVelocity") || !clampedRegions.size())
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Entry 'bodyMotion' moves the clamped regions: it needs"
-                << " an entry 'clamped' (the regions it moves) and no entry"
-                << " 'clampedVelocity'" << exit(FatalIOError);
-        }
-        motion_ = bodyMotion::New(dict_, db.time().value());
-        model_->setClampedVelocity(motion_->velocity());
-
-        // The body moves as a whole at the start (the wedge dropped onto
-        // the water), unless initialVelocity says otherwise below
-        model_->v() = motion_->velocity();
-    }
+    readBodyMotion(db.time().value());
 
     if (dict_.found("initialVelocity"))
     {
         setInitialVelocity(dict_.subDict("initialVelocity"));
     }
-
-    // Loads
     if (dict_.found("loads"))
     {
-        const dictionary& loadsDict = dict_.subDict("loads");
-        for (const entry& e : loadsDict)
-        {
-            if (!e.isDict())
-            {
-                FatalIOErrorInFunction(loadsDict)
-                    << "Entry " << e.keyword() << " of loads must be a"
-                    << " dictionary (region, normal, pressure)"
-                    << exit(FatalIOError);
-            }
-            const dictionary& d = e.dict();
-            surfaceLoad* load = new surfaceLoad;
-            load->name = e.keyword();
-            load->normal = d.get<vector2D>("normal");
-            if (mag(load->normal) < SMALL)
-            {
-                FatalIOErrorInFunction(d)
-                    << "Entry 'normal' of load " << e.keyword()
-                    << " must not be zero" << exit(FatalIOError);
-            }
-            load->normal /= mag(load->normal);
-            load->particles = surfaceLayer
-            (
-                regionParticles(d.get<word>("region"), d),
-                load->normal
-            );
-            load->pressure = Function1<scalar>::New("pressure", d);
-            Info<< "Structure load " << load->name << ": pressure on "
-                << load->particles.size() << " particles of region "
-                << d.get<word>("region") << " facing " << load->normal
-                << endl;
-            loads_.append(load);
-        }
+        readLoads(dict_.subDict("loads"));
     }
 
     nSubSteps_ = model_->setSubSteps(fluidDeltaT);
@@ -254,7 +269,12 @@ Foam::mpsStructure::mpsStructure
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::mpsStructure::advance(const scalar t, const scalar fluidDeltaT)
+void Foam::mpsStructure::advance
+(
+    const scalar t,
+    const scalar fluidDeltaT,
+    const UList<vector2D>& fluidForce
+)
 {
     if (!active())
     {
@@ -271,14 +291,26 @@ void Foam::mpsStructure::advance(const scalar t, const scalar fluidDeltaT)
     // The body's motion over the step, under the fluid force just solved
     if (motion_.valid())
     {
-        motion_->update(t, fluidDeltaT, totalFluidForce_);
+        vector2D F(Zero);
+        for (const vector2D& f : fluidForce)
+        {
+            F += f;
+        }
+        motion_->update(t, fluidDeltaT, F);
         model_->setClampedVelocity(motion_->velocity());
     }
 
     // Fluid forces and loads at the end of the fluid step, held over the
     // sub-steps
     List<vector2D>& f = model_->externalForce();
-    f = fluidForce_;
+    if (fluidForce.size())
+    {
+        f = fluidForce;
+    }
+    else
+    {
+        f = Zero;
+    }
     const scalar ds = model_->spacing();
     for (const surfaceLoad& load : loads_)
     {
@@ -292,33 +324,9 @@ void Foam::mpsStructure::advance(const scalar t, const scalar fluidDeltaT)
     model_->advance(nSubSteps_);
     totalSubSteps_ += nSubSteps_;
 
-    forAll(model_->x(), k)
-    {
-        const vector2D& x = model_->x()[k];
-        if (!std::isfinite(x.x()) || !std::isfinite(x.y()))
-        {
-            FatalErrorInFunction
-                << "The structure diverged in the fluid step ending at"
-                << " time " << t << ": particle " << k << " (reference "
-                << model_->X()[k] << ") is not finite. Nothing of this"
-                << " step was written; the last written time is intact."
-                << exit(FatalError);
-        }
-    }
-
+    checkFinite(t);
     toCloud();
     wallTime_ += clock.elapsed();
-}
-
-
-void Foam::mpsStructure::setFluidForce(const UList<vector2D>& f)
-{
-    fluidForce_ = f;
-    totalFluidForce_ = Zero;
-    for (const vector2D& fk : fluidForce_)
-    {
-        totalFluidForce_ += fk;
-    }
 }
 
 
@@ -328,62 +336,45 @@ void Foam::mpsStructure::toCloud()
     {
         return;
     }
-    mapToCloud();
-    forAll(cloudIndex_, k)
+    forAll(ids_, k)
     {
-        const label i = cloudIndex_[k];
+        const label i = cloud_.index(ids_[k]);
         cloud_.x()[i] = model_->x()[k];
         cloud_.U()[i] = model_->v()[k];
     }
 }
 
 
-void Foam::mpsStructure::readRestart(const polyMesh& mesh)
+void Foam::mpsStructure::readRestart(const lagrangianCloudReader& reader)
 {
     if (!active())
     {
         return;
     }
-    const word& timeName = mesh.time().timeName();
-    const fileName local(cloud::prefix/"structure");
-    auto io = [&](const word& name)
-    {
-        return IOobject
-        (
-            name, timeName, local, mesh,
-            IOobject::MUST_READ, IOobject::NO_WRITE, false
-        );
-    };
-    const IOField<label> id(io("id"));
-    const IOField<vector> D(io("D"));
-    const IOField<vector> U(io("U"));
-    const IOField<scalar> theta(io("theta"));
-    const IOField<scalar> omega(io("omega"));
+    const IOField<label> id(reader.fieldIO("structure", "id"));
+    const IOField<vector> D(reader.fieldIO("structure", "D"));
+    const IOField<vector> U(reader.fieldIO("structure", "U"));
+    const IOField<scalar> theta(reader.fieldIO("structure", "theta"));
+    const IOField<scalar> omega(reader.fieldIO("structure", "omega"));
 
-    // model index of each particle id
-    mapToCloud();
-    Map<label> indexOfId;
-    forAll(cloudIndex_, k)
-    {
-        indexOfId.insert(cloud_.id()[cloudIndex_[k]], k);
-    }
     structureModel& m = model_();
+    const word& timeName = id.time().timeName();
     if (id.size() != m.size())
     {
-        FatalErrorInFunction
+        FatalIOErrorInFunction(id.objectPath())
             << "The structure written at time " << timeName << " has "
             << id.size() << " particles, the case generates " << m.size()
-            << exit(FatalError);
+            << exit(FatalIOError);
     }
     forAll(id, w)
     {
-        const auto iter = indexOfId.cfind(id[w]);
+        const auto iter = modelIndex_.cfind(id[w]);
         if (!iter.found())
         {
-            FatalErrorInFunction
+            FatalIOErrorInFunction(id.objectPath())
                 << "Structure particle id " << id[w] << " written at time "
                 << timeName << " is not generated by system/particleDict"
-                << exit(FatalError);
+                << exit(FatalIOError);
         }
         const label k = iter.val();
         m.x()[k] = m.X()[k] + vector2D(D[w].x(), D[w].y());
@@ -391,7 +382,7 @@ void Foam::mpsStructure::readRestart(const polyMesh& mesh)
         m.theta()[k] = theta[w];
         m.omega()[k] = omega[w];
     }
-    m.setTime(mesh.time().value());
+    m.setTime(id.time().value());
     m.restored();
     if (motion_.valid())
     {
@@ -416,74 +407,18 @@ Foam::labelList Foam::mpsStructure::regionParticles
 }
 
 
-Foam::labelList Foam::mpsStructure::surfaceLayer
+void Foam::mpsStructure::addFields
 (
-    const labelList& particles,
-    const vector2D& n
+    const labelUList& ids,
+    fieldTable& table
 ) const
-{
-    const List<vector2D>& X = model_->X();
-    const scalar ds = model_->spacing();
-    const neighbourList nbrs(X, 1.5*ds);
-    DynamicList<label> layer;
-    for (const label i : particles)
-    {
-        bool covered = false;
-        for (label e = nbrs.offsets()[i]; e < nbrs.offsets()[i + 1]; ++e)
-        {
-            if (((X[nbrs.neighbours()[e]] - X[i]) & n) > 0.5*ds)
-            {
-                covered = true;
-                break;
-            }
-        }
-        if (!covered)
-        {
-            layer.append(i);
-        }
-    }
-    return labelList(std::move(layer));
-}
-
-
-Foam::vector2D Foam::mpsStructure::axis
-(
-    const labelList& particles,
-    const vector2D& end
-) const
-{
-    const List<vector2D>& X = model_->X();
-    vector2D mean(Zero);
-    for (const label i : particles)
-    {
-        mean += X[i];
-    }
-    mean /= max(particles.size(), label(1));
-    scalar xx = 0, xy = 0, yy = 0;
-    for (const label i : particles)
-    {
-        const vector2D d(X[i] - mean);
-        xx += d.x()*d.x();
-        xy += d.x()*d.y();
-        yy += d.y()*d.y();
-    }
-    vector2D a(structureModel::principalAxis(xx, xy, yy));
-    if (((mean - end) & a) < 0)
-    {
-        a = -a;
-    }
-    return a;
-}
-
-
-void Foam::mpsStructure::addFields(cloudFields& fields) const
 {
     if (!active())
     {
         return;
     }
     const structureModel& m = model_();
-    const label n = m.size();
+    const label n = ids.size();
     vectorField D(n);
     scalarField theta(n), omega(n), exx(n), eyy(n), exy(n), axial(n);
 
@@ -494,35 +429,39 @@ void Foam::mpsStructure::addFields(cloudFields& fields) const
         if (!axes.found(region_[k]))
         {
             const labelList ps(findIndices(region_, region_[k]));
-            axes.insert(region_[k], axis(ps, vector2D::zero));
+            axes.insert(region_[k], geometry_->axis(ps, vector2D::zero));
         }
     }
-    for (label k = 0; k < n; ++k)
+    forAll(ids, w)
     {
+        const label k = modelIndex_[cloud_.id()[ids[w]]];
         const vector2D d(m.displacement(k));
         const symmTensor2D e(m.strain(k));
         const vector2D& t = axes[region_[k]];
-        D[k] = vector(d.x(), d.y(), 0);
-        theta[k] = m.theta()[k];
-        omega[k] = m.omega()[k];
-        exx[k] = e.xx();
-        eyy[k] = e.yy();
-        exy[k] = e.xy();
-        axial[k] = t & (e & t);
+        D[w] = vector(d.x(), d.y(), 0);
+        theta[w] = m.theta()[k];
+        omega[w] = m.omega()[k];
+        exx[w] = e.xx();
+        eyy[w] = e.yy();
+        exy[w] = e.xy();
+        axial[w] = t & (e & t);
     }
-    fields.add("D", D);
-    fields.add("theta", theta);
-    fields.add("omega", omega);
-    fields.add("strainXX", exx);
-    fields.add("strainYY", eyy);
-    fields.add("strainXY", exy);
-    fields.add("axialStrain", axial);
+    table.add("D", std::move(D));
+    table.add("theta", std::move(theta));
+    table.add("omega", std::move(omega));
+    table.add("strainXX", std::move(exx));
+    table.add("strainYY", std::move(eyy));
+    table.add("strainXY", std::move(exy));
+    table.add("axialStrain", std::move(axial));
 }
 
 
-Foam::mpsStructure& Foam::mpsStructure::New(const objectRegistry& db)
+const Foam::mpsStructure& Foam::mpsStructure::lookup
+(
+    const objectRegistry& db
+)
 {
-    mpsStructure* ptr = db.getObjectPtr<mpsStructure>(typeName);
+    const mpsStructure* ptr = db.findObject<mpsStructure>(typeName);
     if (!ptr || !ptr->active())
     {
         FatalErrorInFunction
