@@ -83,7 +83,7 @@ int main(int argc, char *argv[])
 
         IStringStream is
         (
-            "structureModel " + model + "; rho 2700; E 68e9; nu 0.3;"
+            "structureModel { type " + model + "; } rho 2700; E 68e9; nu 0.3;"
             " planeStrain yes;"
         );
         autoPtr<structureModel> solidPtr

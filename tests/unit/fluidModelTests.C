@@ -22,7 +22,7 @@ TEST_CASE("flat-surface asymmetry F0 at re 2.1 l0 by hand")
     // Neighbours in the row below at distance l0 (w = 1.1), sqrt(2) l0
     // (w = 2.1/sqrt(2) - 1, two of them, cos 45) and 2 l0 below (w = 0.05):
     // |F| = (2/n0) (1.1 + 2 (2.1/sqrt(2) - 1)/sqrt(2) + 0.05)
-    const dictionary d(test::dict("kernel original;"));
+    const dictionary d(test::dict("kernel { type original; }"));
     autoPtr<mpsKernel> k(mpsKernel::New(d, 2.1*0.01));
     const scalar n0 = k->latticeNumberDensity(0.01);
     const scalar w2 = 2.1/std::sqrt(2.0) - 1;
@@ -165,7 +165,7 @@ TEST_CASE("free-surface models on a lattice tank")
         }
     }
 
-    const dictionary kd(test::dict("kernel original;"));
+    const dictionary kd(test::dict("kernel { type original; }"));
     autoPtr<mpsKernel> k(mpsKernel::New(kd, 2.1*l0));
     const scalar n0 = k->latticeNumberDensity(l0);
     const scalar F0 = k->latticeSurfaceAsymmetry(l0);
@@ -288,7 +288,7 @@ TEST_CASE("viscous term is exact for a quadratic velocity field on a lattice")
         const dictionary d(test::dict
         (
             "rho 1000; nu " + std::to_string(nu) + "; g (0 -9.81 0);"
-            " l0 0.01; kernel original;"
+            " l0 0.01; kernel { type original; }"
             " re { numberDensity 2.1; gradient 2.1; laplacian 2.1;"
             " viscosity " + std::to_string(re) + "; }"
             " freeSurface { type improved; } collision { type none; }"

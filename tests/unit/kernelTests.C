@@ -16,7 +16,7 @@ TEST_CASE("original kernel lattice sums by hand")
     // 2 l0 (4); at sqrt(5) l0 = 2.236 l0 they are outside.
     const scalar l0 = 0.01;
     const scalar re = 2.1*l0;
-    const dictionary d(test::dict("kernel original;"));
+    const dictionary d(test::dict("kernel { type original; }"));
     autoPtr<mpsKernel> k(mpsKernel::New(d, re));
 
     const scalar w1 = 2.1 - 1;
@@ -36,7 +36,7 @@ TEST_CASE("original kernel lattice sums by hand")
 
 TEST_CASE("original kernel lattice sums at re 3.1 and 4.0 l0")
 {
-    const dictionary d(test::dict("kernel original;"));
+    const dictionary d(test::dict("kernel { type original; }"));
     const scalar l0 = 1;
 
     // n0 does not depend on l0 (w depends on r/re only)
@@ -66,7 +66,7 @@ TEST_CASE("polynomial kernel lattice sums by hand")
 {
     const scalar l0 = 0.002;
     const scalar re = 2.1*l0;
-    const dictionary d(test::dict("kernel polynomial;"));
+    const dictionary d(test::dict("kernel { type polynomial; }"));
     autoPtr<mpsKernel> k(mpsKernel::New(d, re));
 
     auto w = [](scalar s) { return std::pow(1 - s/2.1, 3); };
@@ -87,7 +87,7 @@ TEST_CASE("every kernel is zero at and beyond re and positive inside")
     for (const word name : {"original", "polynomial"})
     {
         INFO("kernel " << name);
-        const dictionary d(test::dict("kernel " + name + ";"));
+        const dictionary d(test::dict("kernel { type " + name + "; }"));
         autoPtr<mpsKernel> k(mpsKernel::New(d, re));
 
         CHECK(k->type() == name);
@@ -107,12 +107,12 @@ TEST_CASE("every kernel is zero at and beyond re and positive inside")
         }
     }
 
-    const dictionary dp(test::dict("kernel polynomial;"));
+    const dictionary dp(test::dict("kernel { type polynomial; }"));
     autoPtr<mpsKernel> kp(mpsKernel::New(dp, re));
     CHECK(kp->w(0) == Approx(1));
     CHECK(kp->w(0.5*re) == Approx(0.125));
 
-    const dictionary d0(test::dict("kernel original;"));
+    const dictionary d0(test::dict("kernel { type original; }"));
     autoPtr<mpsKernel> k0(mpsKernel::New(d0, re));
     CHECK(k0->w(0.5*re) == Approx(1));
     CHECK(k0->w(0.25*re) == Approx(3));
@@ -121,7 +121,7 @@ TEST_CASE("every kernel is zero at and beyond re and positive inside")
 
 TEST_CASE("unknown kernel name lists the valid ones")
 {
-    const dictionary d(test::dict("kernel gaussian;"));
+    const dictionary d(test::dict("kernel { type gaussian; }"));
     const std::string msg =
         test::errorOf([&]() { mpsKernel::New(d, 0.01); });
     CHECK_THAT(msg, Contains("Unknown kernel type gaussian"));

@@ -109,7 +109,7 @@ TEST_CASE("rotatingParticles: forces and torques are minus the energy gradient")
     {
         INFO("particles across: " << across);
         test::panel p(0.02, 0.002*across/3, across);
-        autoPtr<structureModel> s(p.model("structureModel rotatingParticles;" + aluminium));
+        autoPtr<structureModel> s(p.model("structureModel { type rotatingParticles; }" + aluminium));
         Random rnd(7);
         const label N = s->size();
         List<vector2D> du(N);
@@ -169,7 +169,7 @@ TEST_CASE("rotatingParticles: static cantilever within 3% of Euler-Bernoulli for
     for (const label n : {1, 2, 3, 5})
     {
         test::panel p(L, H, n);
-        autoPtr<structureModel> s(p.model("structureModel rotatingParticles;" + aluminium));
+        autoPtr<structureModel> s(p.model("structureModel { type rotatingParticles; }" + aluminium));
         List<vector2D> load(s->size(), Zero);
         for (label i = 0; i < p.nx; ++i)
         {
@@ -224,7 +224,7 @@ TEST_CASE("rotatingParticles: oscillating plate period within 2% of 0.2541 s")
     for (const label n : {4, 6, 8})
     {
         test::panel p(0.2, 0.02, n, 4);
-        autoPtr<structureModel> s(p.model("structureModel rotatingParticles;" + grayPlate));
+        autoPtr<structureModel> s(p.model("structureModel { type rotatingParticles; }" + grayPlate));
         s->setDeltaT(0.5*s->maxStableDeltaT());
         firstMode(s(), p, 0.001);
         scalar drift = 0;
@@ -248,7 +248,7 @@ TEST_CASE("rotatingParticles: energy of the undamped plate kept within 1% over t
     // Velocity Verlet is symplectic: kinetic + strain energy oscillates
     // around its initial value without drifting
     test::panel p(0.2, 0.02, 4, 4);
-    autoPtr<structureModel> s(p.model("structureModel rotatingParticles;" + grayPlate));
+    autoPtr<structureModel> s(p.model("structureModel { type rotatingParticles; }" + grayPlate));
     s->setDeltaT(0.8*s->maxStableDeltaT());
     firstMode(s(), p, 0.001);
     scalar drift = 0;
@@ -266,7 +266,7 @@ TEST_CASE("structure models: a rigid rotation and translation give zero strain a
     const scalar c = std::cos(angle), sn = std::sin(angle);
     for (const word model : {"rotatingParticles", "totalLagrangian"})
     {
-        autoPtr<structureModel> s(p.model("structureModel " + model + ";" + aluminium));
+        autoPtr<structureModel> s(p.model("structureModel { type " + model + "; }" + aluminium));
         forAll(s->x(), i)
         {
             const vector2D X(s->X()[i]);
@@ -313,7 +313,7 @@ TEST_CASE("structure models: the stable-step estimate matches the exact highest 
     // Verlet is stable for dt < 2/omega_max. Just below, the energy of a
     // disturbed panel stays bounded; just above, it grows without bound.
     test::panel p(0.01, 0.002, 2);
-    autoPtr<structureModel> s(p.model("structureModel rotatingParticles;" + aluminium));
+    autoPtr<structureModel> s(p.model("structureModel { type rotatingParticles; }" + aluminium));
     const scalar dtMax = s->maxStableDeltaT();
     WARN("largest stable step " << dtMax << " s; ds/c = "
         << p.ds/s->waveSpeed() << " s");
@@ -382,7 +382,7 @@ TEST_CASE("rigid structure keeps its shape exactly under prescribed and free mot
     test::panel p(0.05, 0.002, 2);
     // prescribed: follows the clamped particles
     {
-        autoPtr<structureModel> s(p.model("structureModel rigid;" + aluminium + "deltaT 1e-4;"));
+        autoPtr<structureModel> s(p.model("structureModel { type rigid; }" + aluminium + "deltaT 1e-4;"));
         s->setClampedVelocity(vector2D(0.5, -4.0));
         s->advance(100);
         scalar err = 0;
@@ -397,7 +397,7 @@ TEST_CASE("rigid structure keeps its shape exactly under prescribed and free mot
         List<bool> none(p.X.size(), false);
         autoPtr<structureModel> s
         (
-            structureModel::New(test::dict("structureModel rigid;" + aluminium + "deltaT 1e-4;"), p.X, none, p.ds)
+            structureModel::New(test::dict("structureModel { type rigid; }" + aluminium + "deltaT 1e-4;"), p.X, none, p.ds)
         );
         s->externalForce()[0] = vector2D(0, 10);
         s->evaluate();
@@ -426,17 +426,17 @@ TEST_CASE("structureProperties: wrong entries stop with the entry named")
     test::panel p(0.01, 0.002, 2);
     CHECK_THAT
     (
-        test::errorOf([&]{ p.model("structureModel rotatingParticles; rho 2700; E 68e9; nu 0.6; planeStrain yes;"); }),
+        test::errorOf([&]{ p.model("structureModel { type rotatingParticles; } rho 2700; E 68e9; nu 0.6; planeStrain yes;"); }),
         Catch::Contains("nu = 0.6")
     );
     CHECK_THAT
     (
-        test::errorOf([&]{ p.model("structureModel elastic; rho 2700; E 68e9; nu 0.3; planeStrain yes;"); }),
+        test::errorOf([&]{ p.model("structureModel { type elastic; } rho 2700; E 68e9; nu 0.3; planeStrain yes;"); }),
         Catch::Contains("rotatingParticles") && Catch::Contains("rigid") && Catch::Contains("totalLagrangian")
     );
     CHECK_THAT
     (
-        test::errorOf([&]{ p.model("structureModel rigid; rho 2700; E 68e9; nu 0.3;"); }),
+        test::errorOf([&]{ p.model("structureModel { type rigid; } rho 2700; E 68e9; nu 0.3;"); }),
         Catch::Contains("planeStrain")
     );
 }
@@ -463,7 +463,7 @@ TEST_CASE("rotatingParticles: a panel at the wedge's deadrise angle bends as a h
     {
         const test::panel& pk = k ? r : p;
         const vector2D normal = k ? nrm : vector2D(0, 1);
-        autoPtr<structureModel> s(pk.model("structureModel rotatingParticles;" + aluminium));
+        autoPtr<structureModel> s(pk.model("structureModel { type rotatingParticles; }" + aluminium));
         List<vector2D> load(s->size(), Zero);
         for (label i = 0; i < pk.nx; ++i)
         {

@@ -111,8 +111,14 @@ bool Foam::functionObjects::particleProbes::read(const dictionary& dict)
             << "Entry 'radius' (in l0) must be positive, got " << radius_
             << exit(FatalIOError);
     }
+    // The kernel sub-dictionary, of type polynomial unless it says
+    dictionary kernel(dict.subOrEmptyDict("kernel"));
+    if (!kernel.found("type"))
+    {
+        kernel.add("type", word("polynomial"));
+    }
     kernelDict_.clear();
-    kernelDict_.add("kernel", dict.getOrDefault<word>("kernel", "polynomial"));
+    kernelDict_.add("kernel", kernel);
     // Check the kernel name now, with the list of valid ones; the kernel
     // itself is built at the first write
     mpsKernel::New(kernelDict_, 1);
@@ -129,7 +135,7 @@ bool Foam::functionObjects::particleProbes::execute()
 
 bool Foam::functionObjects::particleProbes::write()
 {
-    const mpsState& state = mpsState::New(mesh_);
+    const mpsState& state = mpsState::lookup(mesh_);
     const mpsCloud& cloud = state.cloud();
     if (!kernel_)
     {

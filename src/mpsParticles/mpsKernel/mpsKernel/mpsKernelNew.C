@@ -21,7 +21,8 @@ Foam::autoPtr<Foam::mpsKernel> Foam::mpsKernel::New
     const scalar re
 )
 {
-    const word modelType(dict.get<word>("kernel"));
+    const dictionary& kernelDict = dict.subDict("kernel");
+    const word modelType(kernelDict.get<word>("type"));
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
 
@@ -29,14 +30,14 @@ Foam::autoPtr<Foam::mpsKernel> Foam::mpsKernel::New
     {
         FatalIOErrorInLookup
         (
-            dict,
+            kernelDict,
             "kernel",
             modelType,
             *dictionaryConstructorTablePtr_
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<mpsKernel>(cstrIter()(dict, re));
+    return autoPtr<mpsKernel>(cstrIter()(kernelDict, re));
 }
 
 

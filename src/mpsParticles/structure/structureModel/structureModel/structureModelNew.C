@@ -23,7 +23,8 @@ Foam::autoPtr<Foam::structureModel> Foam::structureModel::New
     const scalar spacing
 )
 {
-    const word modelType(dict.get<word>("structureModel"));
+    const dictionary& modelDict = dict.subDict("structureModel");
+    const word modelType(modelDict.get<word>("type"));
 
     Info<< "Selecting structure model " << modelType << endl;
 
@@ -33,7 +34,7 @@ Foam::autoPtr<Foam::structureModel> Foam::structureModel::New
     {
         FatalIOErrorInLookup
         (
-            dict,
+            modelDict,
             "structureModel",
             modelType,
             *dictionaryConstructorTablePtr_
