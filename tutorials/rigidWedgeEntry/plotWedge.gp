@@ -39,13 +39,14 @@ set ylabel "p [kPa]"
 set key top right
 set xrange [-0.3:0.3]
 set samples 1000
-plot for [t in "0.005 0.01 0.015"] "wallPressure_".t.".dat" u ($1 - 0.8):($3/1e3) w p pt 7 ps 0.6 t "t = ".t." s", \
+plot for [t in "0.005 0.01 0.015"] "postProcessing/wallPressure/".t."/wallPressure.dat" \
+         u ($1 - 0.8):($3/1e3) w p pt 7 ps 0.6 t "t = ".t." s", \
      for [t in "0.005 0.01 0.015"] pWc(x, t + 0)/1e3 w l lw 1.5 dt 2 t "Wagner, ".t." s"
 
 # The same pressure in Wagner's similarity variables: Cp = p/(rho V^2/2)
 # against x/c(t), every written time from 4 ms until the spray root is 0.9
 # of the way to the chine (grey), and their mean over bins of 0.05 in
-# |x|/c (Allrun). Wagner's outer solution
+# |x|/c (bin/wedgePressureSimilarity). Wagner's outer solution
 #   Cp = 2 (cdot/V)/sqrt(1 - xi^2) - xi^2/(1 - xi^2), xi = x/c,
 # up to the spray-root peak (cdot/V)^2 (7.40 at 30 deg); Zhao & Faltinsen's
 # (1993) similarity solution peaks lower (6.93 at 30 deg, recalled from
@@ -62,7 +63,7 @@ set ylabel "C_p = p / ({/Symbol r} V^2/2)"
 set xrange [0:2]
 set yrange [-2:25]
 set key top right
-plot "wallPressureSimilarity.dat" u (abs($1)):2 w p pt 7 ps 0.3 lc rgb "#c0c0c0" t "wall particles, 4 ms to 0.9 t_{chine}", \
-     "pressureSimilarity.dat" u 1:2:3 w yerrorlines pt 7 ps 0.8 lw 1.5 lc rgb "#1f77b4" t "mpsFsiFoam, bin mean +- std. dev.", \
+plot "postProcessing/wallPressure/wallPressureSimilarity.dat" u (abs($1)):2 w p pt 7 ps 0.3 lc rgb "#c0c0c0" t "wall particles, 4 ms to 0.9 t_{chine}", \
+     "postProcessing/wallPressure/pressureSimilarity.dat" u 1:2:3 w yerrorlines pt 7 ps 0.8 lw 1.5 lc rgb "#1f77b4" t "mpsFsiFoam, bin mean +- std. dev.", \
      CpW(x) w l lw 2 dt 2 lc rgb "black" t "Wagner (outer solution, capped at its peak)", \
      (deadrise == 30 ? 6.93 : 1/0) w l lw 1.5 dt 3 lc rgb "#d62728" t "Zhao and Faltinsen peak, 30 deg"

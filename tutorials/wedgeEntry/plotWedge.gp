@@ -1,11 +1,15 @@
 # The elastic wedge's pictures (run in the case folder): strain at the
 # gauges 30 and 120 mm from the keel (the seed paper's Fig. 4), the force
 # of the water, and the wedge coloured by its axial strain at 0, 10, 20 and
-# 26 ms (the paper's Fig. 6). strainGauges.dat (from Allrun): t [ms], then
-# microstrain at left30_wet left30_dry left120_wet left120_dry right30_wet
-# right30_dry right120_wet right120_dry.
+# 26 ms (the paper's Fig. 6). The gauges' columns of strain.dat, in the
+# order Time left30_wet left30_dry left120_wet left120_dry right30_wet
+# right30_dry right120_wet right120_dry (bin/postProcessingColumns).
 # Wagner: the spray root passes 30 mm at 2.4 ms, 120 mm at 9.6 ms, the
 # chine (300 mm) at 23.9 ms.
+
+gauges = "< postProcessingColumns postProcessing/strainProbes/0/strain.dat" \
+    ." Time left30_wet left30_dry left120_wet left120_dry" \
+    ." right30_wet right30_dry right120_wet right120_dry"
 
 set terminal pngcairo size 900,600 font ",11"
 set grid
@@ -18,19 +22,19 @@ set output "strain30.png"
 set title "Strain 30 mm from the keel (tension positive)"
 set arrow 1 from 2.4, graph 0 to 2.4, graph 1 nohead dt 3 lc rgb "gray"
 set label 1 "Wagner: wetted at 2.4 ms" at 2.6, graph 0.95
-plot "strainGauges.dat" u 1:6 w l lw 1.5 t "right, wet face", \
-     "" u 1:7 w l lw 1.5 t "right, dry face", \
-     "" u 1:2 w l lw 1 dt 2 t "left, wet face", \
-     "" u 1:3 w l lw 1 dt 2 t "left, dry face"
+plot gauges u (1e3*$1):(1e6*$6) w l lw 1.5 t "right, wet face", \
+     "" u (1e3*$1):(1e6*$7) w l lw 1.5 t "right, dry face", \
+     "" u (1e3*$1):(1e6*$2) w l lw 1 dt 2 t "left, wet face", \
+     "" u (1e3*$1):(1e6*$3) w l lw 1 dt 2 t "left, dry face"
 
 set output "strain120.png"
 set title "Strain 120 mm from the keel (tension positive)"
 set arrow 1 from 9.6, graph 0 to 9.6, graph 1 nohead dt 3 lc rgb "gray"
 set label 1 "Wagner: wetted at 9.6 ms" at 9.8, graph 0.95
-plot "strainGauges.dat" u 1:8 w l lw 1.5 t "right, wet face", \
-     "" u 1:9 w l lw 1.5 t "right, dry face", \
-     "" u 1:4 w l lw 1 dt 2 t "left, wet face", \
-     "" u 1:5 w l lw 1 dt 2 t "left, dry face"
+plot gauges u (1e3*$1):(1e6*$8) w l lw 1.5 t "right, wet face", \
+     "" u (1e3*$1):(1e6*$9) w l lw 1.5 t "right, dry face", \
+     "" u (1e3*$1):(1e6*$4) w l lw 1 dt 2 t "left, wet face", \
+     "" u (1e3*$1):(1e6*$5) w l lw 1 dt 2 t "left, dry face"
 unset arrow 1
 unset label 1
 
@@ -56,9 +60,10 @@ set cbrange [-3000:3000]
 set palette defined (-1 "blue", 0 "#b0b0b0", 1 "red")
 unset key
 # The times written (a shorter run has fewer of them)
-times = system("for t in 0 0.01 0.02 0.026; do [ -s wedge_$t.dat ] && echo $t; done")
+times = system("for t in 0 0.01 0.02 0.026; do [ -d $t/lagrangian/structure ] && echo $t; done")
 do for [t in times] {
     set title "t = ".t." s"
-    plot "wedge_".t.".dat" u 1:2:($3*1e6) w p pt 7 ps 0.25 lc palette
+    plot "< lagrangianColumns ".t."/lagrangian/structure axialStrain" \
+        u 1:2:($3*1e6) w p pt 7 ps 0.25 lc palette
 }
 unset multiplot
