@@ -46,6 +46,8 @@ Description
 #include "mpsStructure.H"
 #include "fluidStructureInterface.H"
 #include "clockValue.H"
+#include "inputChecks.H"
+#include "IFstream.H"
 #include <fenv.h>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -60,7 +62,10 @@ int main(int argc, char *argv[])
     argList::noParallel();
 
     #include "setRootCaseLists.H"
+    #include "checkControlDict.H"
+    #include "checkLatestTime.H"
     #include "createTime.H"
+    #include "checkStartTime.H"
 
     // The solver checks every step for values that are not finite and stops
     // with a message naming the step: floating-point traps would abort it
@@ -78,6 +83,7 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
+        #include "checkFunctionObjects.H"
         #include "writeStartTime.H"
 
         ++runTime;

@@ -241,10 +241,15 @@ TEST_CASE("output round trip: a written cloud reads back exactly")
     const unsigned precision = IOstream::defaultPrecision();
     IOstream::defaultPrecision(17);
     const lagrangianCloudWriter writer(mesh);
-    writer.write(cloudFields("fluid", written, {particleKind::fluid}));
     writer.write
     (
-        cloudFields("wall", written, {particleKind::wall, particleKind::dummy})
+        cloudFields("fluid", written, {particleKind::fluid}),
+        runTime.timeName()
+    );
+    writer.write
+    (
+        cloudFields("wall", written, {particleKind::wall, particleKind::dummy}),
+        runTime.timeName()
     );
     IOstream::defaultPrecision(precision);
 

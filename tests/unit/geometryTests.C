@@ -206,7 +206,7 @@ TEST_CASE("bad regions stop with errors naming the entry")
     CHECK_THAT
     (
         generateError("w { type circle; kind fluid; }"),
-        Contains("Unknown type type circle") && Contains("polygon")
+        Contains("Unknown shape type circle") && Contains("polygon")
     );
     CHECK_THAT
     (

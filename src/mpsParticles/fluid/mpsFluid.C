@@ -13,6 +13,7 @@ License
 
 #include "mpsFluid.H"
 #include "clockValue.H"
+#include "inputChecks.H"
 #include <omp.h>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -25,6 +26,37 @@ const Foam::Enum<Foam::mpsFluid::sourceType> Foam::mpsFluid::sourceTypeNames
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
+{
+    inputChecks::keywords
+    (
+        dict,
+        {
+            "rho", "nu", "g", "l0", "kernel", "re", "ppe", "freeSurface",
+            "collision", "pressureSolver"
+        },
+        "constant/mpsProperties"
+    );
+    inputChecks::values(dict, {"rho", "nu", "g", "l0"});
+    inputChecks::keywords
+    (
+        inputChecks::subDict(dict, "re"),
+        {"numberDensity", "gradient", "laplacian", "viscosity"},
+        "re"
+    );
+    if (const dictionary* ppe = inputChecks::optionalDict(dict, "ppe"))
+    {
+        inputChecks::keywords
+        (
+            *ppe,
+            {"source", "relaxation", "compressibility", "clampNegative"},
+            "ppe"
+        );
+    }
+    return dict;
+}
+
 
 Foam::scalar Foam::mpsFluid::readPositive
 (
@@ -444,7 +476,7 @@ Foam::mpsFluid::mpsFluid
 )
 :
     cloud_(cloud),
-    rho_(readPositive(dict, "rho")),
+    rho_(readPositive(checkEntries(dict), "rho")),
     nu_(dict.get<scalar>("nu")),
     g_(Zero),
     l0_(readPositive(dict, "l0")),
@@ -469,12 +501,15 @@ Foam::mpsFluid::mpsFluid
     const dictionary& reDict = dict.subDict("re");
     auto radius = [&](const word& key)
     {
+        // A radius beyond 10 l0 is no MPS kernel (2 to 4 l0 are usual),
+        // and its lattice sums would run over (2 re/l0)^2 sites
+        inputChecks::value(reDict, key);
         const scalar re = reDict.get<scalar>(key);
-        if (!(re > 1))
+        if (!(re > 1 && re <= 10))
         {
             FatalIOErrorInFunction(reDict)
-                << "Entry '" << key << "' (radius in units of l0) must"
-                << " exceed 1, got " << re << exit(FatalIOError);
+                << "Entry '" << key << "' (radius in units of l0) must lie"
+                << " in (1, 10], got " << re << exit(FatalIOError);
         }
         return re*l0_;
     };

@@ -133,6 +133,36 @@ bool Foam::lagrangianCloudReader::found() const
 }
 
 
+void Foam::lagrangianCloudReader::checkComplete(const mpsCloud& cloud) const
+{
+    const fileName dir
+    (
+        mesh_.time().path()/mesh_.time().timeName()/cloud::prefix
+    );
+    const label counts[] =
+    {
+        cloud.count(particleKind::fluid),
+        cloud.count(particleKind::wall) + cloud.count(particleKind::dummy),
+        cloud.count(particleKind::structure)
+    };
+    const word names[] = {"fluid", "wall", "structure"};
+    for (int c = 0; c < 3; ++c)
+    {
+        const fileName positions(dir/names[c]/"positions");
+        if (counts[c] && !isFile(positions))
+        {
+            FatalErrorInFunction
+                << "Cannot continue from time " << mesh_.time().timeName()
+                << ": it has no cloud " << names[c] << " (no file "
+                << positions << "), where system/particleDict makes "
+                << counts[c] << " particles of it." << nl
+                << "Start from a time that has every cloud, or from 0 (the"
+                << " particles generated anew)" << exit(FatalError);
+        }
+    }
+}
+
+
 void Foam::lagrangianCloudReader::read(mpsCloud& cloud) const
 {
     List<bool> found(cloud.size(), false);

@@ -23,10 +23,35 @@ License
 namespace Foam
 {
 
+// Write an object into its own instance (regIOobject::write would put it in
+// the current time's folder whatever its instance says)
+static void writeInto(const regIOobject& obj)
+{
+    const Time& runTime = obj.time();
+    mkDir(obj.path());
+    OFstream os
+    (
+        obj.objectPath(),
+        runTime.writeFormat(),
+        IOstream::currentVersion,
+        runTime.writeCompression()
+    );
+    obj.writeHeader(os);
+    obj.writeData(os);
+    IOobject::writeEndDivider(os);
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Cannot write " << os.name() << exit(FatalError);
+    }
+}
+
+
 template<class Type>
 static void writeFields
 (
     const objectRegistry& db,
+    const fileName& instance,
     const fileName& local,
     const HashTable<Field<Type>>& fields
 )
@@ -38,7 +63,7 @@ static void writeFields
             IOobject
             (
                 iter.key(),
-                db.time().timeName(),
+                instance,
                 local,
                 db,
                 IOobject::NO_READ,
@@ -47,7 +72,7 @@ static void writeFields
             ),
             iter.val()
         );
-        fld.write();
+        writeInto(fld);
     }
 }
 
@@ -64,9 +89,12 @@ Foam::lagrangianCloudWriter::lagrangianCloudWriter(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::lagrangianCloudWriter::write(const cloudFields& cloud) const
+void Foam::lagrangianCloudWriter::write
+(
+    const cloudFields& cloud,
+    const fileName& instance
+) const
 {
-    const Time& runTime = mesh_.time();
     const fileName local(cloud::prefix/cloud.name());
 
     // positions: "(x y z) celli", always ASCII so every reader parses it
@@ -74,7 +102,7 @@ void Foam::lagrangianCloudWriter::write(const cloudFields& cloud) const
         IOobject io
         (
             "positions",
-            runTime.timeName(),
+            instance,
             local,
             mesh_,
             IOobject::NO_READ,
@@ -95,9 +123,9 @@ void Foam::lagrangianCloudWriter::write(const cloudFields& cloud) const
         IOobject::writeEndDivider(os);
     }
 
-    writeFields(mesh_, local, cloud.vectorFields());
-    writeFields(mesh_, local, cloud.scalarFields());
-    writeFields(mesh_, local, cloud.labelFields());
+    writeFields(mesh_, instance, local, cloud.vectorFields());
+    writeFields(mesh_, instance, local, cloud.scalarFields());
+    writeFields(mesh_, instance, local, cloud.labelFields());
 
     // uniform/lagrangian/<cloud>/cloudProperties
     IOdictionary props
@@ -105,7 +133,7 @@ void Foam::lagrangianCloudWriter::write(const cloudFields& cloud) const
         IOobject
         (
             "cloudProperties",
-            runTime.timeName(),
+            instance,
             "uniform"/local,
             mesh_,
             IOobject::NO_READ,
@@ -117,7 +145,7 @@ void Foam::lagrangianCloudWriter::write(const cloudFields& cloud) const
     dictionary procDict;
     procDict.add("particleCount", cloud.size());
     props.add("processor0", procDict);
-    props.regIOobject::write();
+    writeInto(props);
 }
 
 

@@ -12,11 +12,14 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsCloudOutput.H"
+#include "Time.H"
+#include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::mpsCloudOutput::mpsCloudOutput(const polyMesh& mesh)
 :
+    mesh_(mesh),
     lagrangian_(mesh),
     vtk_(mesh.time())
 {}
@@ -34,8 +37,38 @@ void Foam::mpsCloudOutput::addSource
 }
 
 
+void Foam::mpsCloudOutput::moveMissing
+(
+    const fileName& src,
+    const fileName& dst
+)
+{
+    mkDir(dst);
+    for (const fileName& f : readDir(src, fileName::FILE))
+    {
+        if (!exists(dst/f))
+        {
+            Foam::mv(src/f, dst/f);
+        }
+    }
+    for (const fileName& d : readDir(src, fileName::DIRECTORY))
+    {
+        moveMissing(src/d, dst/d);
+    }
+}
+
+
 void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
 {
+    const Time& runTime = mesh_.time();
+    const fileName timeDir(runTime.path()/runTime.timeName());
+    const word staging(runTime.timeName() + ".tmp");
+    const fileName stagingDir(runTime.path()/staging);
+    if (exists(stagingDir))
+    {
+        rmDir(stagingDir);
+    }
+
     cloudFields clouds[] =
     {
         cloudFields("fluid", cloud, {particleKind::fluid}),
@@ -56,8 +89,29 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
                 source.second->addFields(c.ids(), c);
             }
         }
-        lagrangian_.write(c);
-        vtk_.write(c);
+        lagrangian_.write(c, staging);
+    }
+
+    // OpenFOAM's own files of the time (uniform/time, written just before)
+    // join the clouds; then the complete time takes the time's name in one
+    // rename, so that a kill leaves either the earlier state of the time or
+    // the whole new one (and a <time>.tmp that no time listing reads)
+    if (isDir(timeDir/"uniform"))
+    {
+        moveMissing(timeDir/"uniform", stagingDir/"uniform");
+    }
+    if (exists(timeDir))
+    {
+        rmDir(timeDir);
+    }
+    Foam::mv(stagingDir, timeDir);
+
+    for (const cloudFields& c : clouds)
+    {
+        if (c.size())
+        {
+            vtk_.write(c);
+        }
     }
 }
 

@@ -91,20 +91,25 @@ void Foam::vtkCloudWriter::readSeries(const word& cloudName)
 
 void Foam::vtkCloudWriter::writeSeries(const word& cloudName) const
 {
-    std::ofstream os(dir_/cloudName + ".pvd");
-    os  << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"Collection\" version=\"0.1\""
-        << " byte_order=\"LittleEndian\">\n"
-        << "  <Collection>\n";
-    os.precision(12);
-    for (const auto& e : series_[cloudName])
+    // Written under a temporary name and renamed when complete
+    const fileName pvd(dir_/cloudName + ".pvd");
     {
-        os  << "    <DataSet timestep=\"" << e.first()
-            << "\" group=\"\" part=\"0\" file=\"" << e.second().c_str()
-            << "\"/>\n";
+        std::ofstream os(pvd + ".tmp");
+        os  << "<?xml version=\"1.0\"?>\n"
+            << "<VTKFile type=\"Collection\" version=\"0.1\""
+            << " byte_order=\"LittleEndian\">\n"
+            << "  <Collection>\n";
+        os.precision(12);
+        for (const auto& e : series_[cloudName])
+        {
+            os  << "    <DataSet timestep=\"" << e.first()
+                << "\" group=\"\" part=\"0\" file=\"" << e.second().c_str()
+                << "\"/>\n";
+        }
+        os  << "  </Collection>\n"
+            << "</VTKFile>\n";
     }
-    os  << "  </Collection>\n"
-        << "</VTKFile>\n";
+    Foam::mv(pvd + ".tmp", pvd);
 }
 
 
@@ -133,7 +138,7 @@ void Foam::vtkCloudWriter::write(const cloudFields& cloud)
     const label n = cloud.size();
 
     {
-        std::ofstream os(dir_/file);
+        std::ofstream os(dir_/file + ".tmp");
         autoPtr<vtk::formatter> format =
             vtk::outputOptions(vtk::formatType::INLINE_BASE64)
            .newFormatter(os);
@@ -185,16 +190,17 @@ void Foam::vtkCloudWriter::write(const cloudFields& cloud)
         format().endPiece();
         format().endTag(vtk::fileTag::POLY_DATA).endVTKFile();
     }
+    Foam::mv(dir_/file + ".tmp", dir_/file);
 
+    // The run writes from this time on: entries of an earlier run at this
+    // time or later go (as its files are overwritten, index by index)
     DynamicList<Tuple2<scalar, word>>& entries = series_(name);
-    if (entries.size() && entries.last().first() >= runTime_.value())
+    const scalar tol = 1e-9*max(runTime_.deltaTValue(), VSMALL);
+    while (entries.size() && entries.last().first() > runTime_.value() - tol)
     {
-        entries.last() = Tuple2<scalar, word>(runTime_.value(), file);
+        entries.remove();
     }
-    else
-    {
-        entries.append(Tuple2<scalar, word>(runTime_.value(), file));
-    }
+    entries.append(Tuple2<scalar, word>(runTime_.value(), file));
     writeSeries(name);
 }
 

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bodyMotion.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -21,7 +22,8 @@ Foam::autoPtr<Foam::bodyMotion> Foam::bodyMotion::New
     const scalar t0
 )
 {
-    const dictionary& dict = structureProperties.subDict("bodyMotion");
+    const dictionary& dict =
+        inputChecks::subDict(structureProperties, "bodyMotion");
     const word modelType(dict.get<word>("type"));
 
     Info<< "Selecting body motion " << modelType << endl;

@@ -13,6 +13,7 @@ License
 
 #include "free.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -34,6 +35,12 @@ Foam::bodyMotions::free::free(const dictionary& dict, const scalar t0)
     mass_(dict.get<scalar>("mass")),
     g_(dict.getOrDefault<vector2D>("g", vector2D::zero))
 {
+    inputChecks::keywords
+    (
+        dict,
+        {"type", "mass", "initialVelocity", "g"},
+        "bodyMotion free"
+    );
     if (!(mass_ > 0))
     {
         FatalIOErrorInFunction(dict)

@@ -13,6 +13,7 @@ License
 
 #include "prescribed.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -37,6 +38,12 @@ Foam::bodyMotions::prescribed::prescribed
     bodyMotion(dict, t0),
     velocity_(Function1<vector>::New("velocity", dict))
 {
+    inputChecks::keywords
+    (
+        dict,
+        {"type", "velocity", "velocityCoeffs"},
+        "bodyMotion prescribed"
+    );
     const vector U(velocity_->value(t0));
     U_ = vector2D(U.x(), U.y());
 }

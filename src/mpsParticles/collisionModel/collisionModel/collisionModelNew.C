@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "collisionModel.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -20,7 +21,8 @@ Foam::autoPtr<Foam::collisionModel> Foam::collisionModel::New
     const dictionary& mpsProperties
 )
 {
-    const dictionary& dict = mpsProperties.subDict("collision");
+    const dictionary& dict =
+        inputChecks::subDict(mpsProperties, "collision");
     const word modelType(dict.get<word>("type"));
 
     Info<< "Selecting collision model " << modelType << endl;

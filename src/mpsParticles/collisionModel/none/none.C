@@ -13,6 +13,7 @@ License
 
 #include "none.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -32,6 +33,12 @@ Foam::collisionModels::none::none(const dictionary& dict)
 :
     collisionModel(dict)
 {
+    inputChecks::keywords
+    (
+        dict,
+        {"type"},
+        "collision none"
+    );
 }
 
 

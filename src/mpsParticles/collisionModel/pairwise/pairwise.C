@@ -13,6 +13,7 @@ License
 
 #include "pairwise.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -34,6 +35,12 @@ Foam::collisionModels::pairwise::pairwise(const dictionary& dict)
     alpha_(dict.getOrDefault<scalar>("alpha", 0.85)),
     e_(dict.getOrDefault<scalar>("e", 0.2))
 {
+    inputChecks::keywords
+    (
+        dict,
+        {"type", "alpha", "e"},
+        "collision pairwise"
+    );
     if (!(alpha_ > 0 && alpha_ < 1))
     {
         FatalIOErrorInFunction(dict)

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "freeSurfaceModel.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -20,7 +21,8 @@ Foam::autoPtr<Foam::freeSurfaceModel> Foam::freeSurfaceModel::New
     const dictionary& mpsProperties
 )
 {
-    const dictionary& dict = mpsProperties.subDict("freeSurface");
+    const dictionary& dict =
+        inputChecks::subDict(mpsProperties, "freeSurface");
     const word modelType(dict.get<word>("type"));
 
     Info<< "Selecting freeSurface model " << modelType << endl;

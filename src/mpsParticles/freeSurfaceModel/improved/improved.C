@@ -13,6 +13,7 @@ License
 
 #include "improved.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -34,7 +35,14 @@ Foam::freeSurfaceModels::improved::improved(const dictionary& dict)
     beta_(readFraction("beta", 0.8)),
     asymmetry_(readFraction("asymmetry", 0.6)),
     wallBeta_(readFraction("wallBeta", 0.97))
-{}
+{
+    inputChecks::keywords
+    (
+        dict,
+        {"type", "beta", "asymmetry", "wallBeta"},
+        "freeSurface improved"
+    );
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -13,6 +13,7 @@ License
 
 #include "neighbourAsymmetry.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -33,7 +34,14 @@ Foam::freeSurfaceModels::neighbourAsymmetry::neighbourAsymmetry(const dictionary
     freeSurfaceModel(dict),
     beta_(readFraction("beta", 0.8)),
     asymmetry_(readFraction("asymmetry", 0.6))
-{}
+{
+    inputChecks::keywords
+    (
+        dict,
+        {"type", "beta", "asymmetry"},
+        "freeSurface neighbourAsymmetry"
+    );
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

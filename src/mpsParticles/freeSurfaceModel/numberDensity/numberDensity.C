@@ -13,6 +13,7 @@ License
 
 #include "numberDensity.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -32,7 +33,9 @@ Foam::freeSurfaceModels::numberDensity::numberDensity(const dictionary& dict)
 :
     freeSurfaceModel(dict),
     beta_(readFraction("beta", 0.97))
-{}
+{
+    inputChecks::keywords(dict, {"type", "beta"}, "freeSurface numberDensity");
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

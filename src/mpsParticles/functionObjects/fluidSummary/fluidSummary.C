@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fluidSummary.H"
+#include "inputChecks.H"
 #include "mpsState.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -74,6 +75,12 @@ Foam::functionObjects::fluidSummary::fluidSummary
 bool Foam::functionObjects::fluidSummary::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
+    inputChecks::keywords
+    (
+        dict,
+        inputChecks::functionObjectKeywords({}),
+        "function object " + name()
+    );
     writeFile::read(dict);
     return true;
 }

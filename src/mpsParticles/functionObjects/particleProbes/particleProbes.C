@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleProbes.H"
+#include "inputChecks.H"
 #include "mpsState.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -91,9 +92,34 @@ Foam::functionObjects::particleProbes::particleProbes
 bool Foam::functionObjects::particleProbes::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
+    inputChecks::keywords
+    (
+        dict,
+        inputChecks::functionObjectKeywords
+        (
+            {"probeLocations", "fields", "radius", "kernel"}
+        ),
+        "function object " + name()
+    );
     logFiles::read(dict);
 
     locations_ = dict.get<pointField>("probeLocations");
+    const boundBox& domain = mesh_.bounds();
+    for (const point& p : locations_)
+    {
+        if
+        (
+            p.x() < domain.min().x() || p.x() > domain.max().x()
+         || p.y() < domain.min().y() || p.y() > domain.max().y()
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "Probe location " << p << " of 'probeLocations' is"
+                << " outside the domain (the background mesh, "
+                << domain.min() << " to " << domain.max() << ")"
+                << exit(FatalIOError);
+        }
+    }
     fields_ = dict.getOrDefault<wordList>("fields", wordList({"p", "U"}));
     for (const word& f : fields_)
     {

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "strainProbes.H"
+#include "inputChecks.H"
 #include "mpsStructure.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -138,9 +139,15 @@ Foam::functionObjects::strainProbes::strainProbes
 bool Foam::functionObjects::strainProbes::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
+    inputChecks::keywords
+    (
+        dict,
+        inputChecks::functionObjectKeywords({"gauges"}),
+        "function object " + name()
+    );
     logFiles::read(dict);
 
-    const dictionary& gaugesDict = dict.subDict("gauges");
+    const dictionary& gaugesDict = inputChecks::subDict(dict, "gauges");
     gauges_.setSize(gaugesDict.size());
     label i = 0;
     for (const entry& e : gaugesDict)
@@ -155,6 +162,12 @@ bool Foam::functionObjects::strainProbes::read(const dictionary& dict)
         gauge& g = gauges_[i++];
         g.name = e.keyword();
         g.dict = e.dict();
+        inputChecks::keywords
+        (
+            g.dict,
+            {"region", "end", "distance", "surface"},
+            "gauge " + g.name
+        );
         g.region = g.dict.get<word>("region");
         g.end = g.dict.get<vector2D>("end");
         g.distance = g.dict.get<scalar>("distance");

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "structureForces.H"
+#include "inputChecks.H"
 #include "fluidStructureInterface.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -49,6 +50,12 @@ Foam::functionObjects::structureForces::structureForces
 bool Foam::functionObjects::structureForces::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
+    inputChecks::keywords
+    (
+        dict,
+        inputChecks::functionObjectKeywords({}),
+        "function object " + name()
+    );
     logFiles::read(dict);
     return true;
 }

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "structureProbes.H"
+#include "inputChecks.H"
 #include "mpsStructure.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -49,6 +50,44 @@ void Foam::functionObjects::structureProbes::writeFileHeader()
 }
 
 
+void Foam::functionObjects::structureProbes::locate
+(
+    const structureModel& s
+)
+{
+    const List<vector2D>& X = s.X();
+    carriers_.setSize(points_.size());
+    forAll(points_, i)
+    {
+        scalar dMin = GREAT;
+        forAll(X, k)
+        {
+            dMin = min(dMin, mag(X[k] - points_[i]));
+        }
+        // A reference point on the structure: within a spacing of a
+        // particle (one farther off would follow an arbitrary one)
+        if (dMin > s.spacing())
+        {
+            FatalErrorInFunction
+                << "Function object " << name() << ": probe " << names_[i]
+                << " at " << points_[i]
+                << " is " << dMin << " m from the nearest structural"
+                << " particle (more than the spacing " << s.spacing()
+                << " m): give a point on the structure"
+                << exit(FatalError);
+        }
+        DynamicList<label> c;
+        forAll(X, k)
+        {
+            if (mag(X[k] - points_[i]) <= dMin*(1 + 1e-6) + 1e-12)
+            {
+                c.append(k);
+            }
+        }
+        carriers_[i] = std::move(c);
+    }
+}
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::functionObjects::structureProbes::structureProbes
@@ -63,6 +102,15 @@ Foam::functionObjects::structureProbes::structureProbes
     headerWritten_(false)
 {
     read(dict);
+
+    // Locate the probes now when the structure is there: one off the
+    // structure stops the run before anything is written
+    const mpsStructure* structure =
+        mesh_.findObject<mpsStructure>(mpsStructure::typeName);
+    if (structure && structure->active())
+    {
+        locate(structure->model());
+    }
 }
 
 
@@ -71,9 +119,15 @@ Foam::functionObjects::structureProbes::structureProbes
 bool Foam::functionObjects::structureProbes::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
+    inputChecks::keywords
+    (
+        dict,
+        inputChecks::functionObjectKeywords({"probes"}),
+        "function object " + name()
+    );
     logFiles::read(dict);
 
-    const dictionary& probes = dict.subDict("probes");
+    const dictionary& probes = inputChecks::subDict(dict, "probes");
     names_ = probes.toc();
     points_.setSize(names_.size());
     forAll(names_, i)
@@ -110,24 +164,7 @@ bool Foam::functionObjects::structureProbes::write()
 
     if (carriers_.empty())
     {
-        carriers_.setSize(points_.size());
-        forAll(points_, i)
-        {
-            scalar dMin = GREAT;
-            forAll(X, k)
-            {
-                dMin = min(dMin, mag(X[k] - points_[i]));
-            }
-            DynamicList<label> c;
-            forAll(X, k)
-            {
-                if (mag(X[k] - points_[i]) <= dMin*(1 + 1e-6) + 1e-12)
-                {
-                    c.append(k);
-                }
-            }
-            carriers_[i] = std::move(c);
-        }
+        locate(s);
     }
 
     if (Pstream::master())

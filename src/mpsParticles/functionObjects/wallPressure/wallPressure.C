@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "wallPressure.H"
+#include "inputChecks.H"
 #include "mpsState.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -70,6 +71,12 @@ Foam::functionObjects::wallPressure::wallPressure
 bool Foam::functionObjects::wallPressure::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
+    inputChecks::keywords
+    (
+        dict,
+        inputChecks::functionObjectKeywords({"wall", "Uref", "pRef"}),
+        "function object " + name()
+    );
     writeFile::read(dict);
     regionName_ = dict.get<word>("wall");
     Uref_ = dict.get<scalar>("Uref");

@@ -12,6 +12,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleGenerator.H"
+#include "inputChecks.H"
+#include <fstream>
 #include "particleShape.H"
 #include "neighbourList.H"
 
@@ -131,6 +133,103 @@ Foam::particleGenerator::particleGenerator
 {}
 
 
+Foam::scalar Foam::particleGenerator::regionSpacing
+(
+    const word& name,
+    const dictionary& rDict
+) const
+{
+    inputChecks::values(rDict, {"type", "kind", "spacing", "dummyLayers"});
+    const word kindName(rDict.get<word>("kind"));
+    if (!particleKindNames.found(kindName))
+    {
+        FatalIOErrorInFunction(rDict)
+            << "Entry 'kind' of region " << name << " is " << kindName
+            << "; valid kinds: " << flatOutput(particleKindNames.names())
+            << exit(FatalIOError);
+    }
+    const scalar spacing = rDict.getOrDefault<scalar>
+    (
+        "spacing",
+        particleKindNames[kindName] == particleKind::structure
+      ? structureSpacing_
+      : fluidSpacing_
+    );
+    if (!(spacing > 0))
+    {
+        FatalIOErrorInFunction(rDict)
+            << "Entry 'spacing' of region " << name
+            << " must be positive, got " << spacing << exit(FatalIOError);
+    }
+    return spacing;
+}
+
+
+void Foam::particleGenerator::checkSize(const dictionary& regionsDict) const
+{
+    // Each particle costs about bytesPerParticle in a run (the cloud's
+    // fields, two neighbour lists with their weights, the PPE matrix
+    // row): measured 1.1-1.6 kB on the tutorials (maximum resident set
+    // over particles), taken as 2 kB
+    const scalar bytesPerParticle = 2048;
+
+    scalar n = 0;
+    for (const entry& e : regionsDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(regionsDict)
+                << "Entry '" << e.keyword() << "' in 'regions' is not a"
+                << " dictionary: each region is { type ...; kind ...; }"
+                << exit(FatalIOError);
+        }
+        const scalar spacing = regionSpacing(e.keyword(), e.dict());
+        n += particleShape::New(e.dict())->estimatedCount(spacing);
+    }
+
+    const scalar maxParticles =
+        dict_.getOrDefault<scalar>("maxParticles", GREAT);
+    const scalar available = availableMemory();
+    if (n > maxParticles || n*bytesPerParticle > available)
+    {
+        FatalIOErrorInFunction(regionsDict)
+            << "The regions would make about " << label(n) << " particles";
+        if (n > maxParticles)
+        {
+            FatalIOError
+                << ", more than maxParticles " << label(maxParticles);
+        }
+        else
+        {
+            FatalIOError
+                << ", about " << n*bytesPerParticle/1073741824.0
+                << " GiB to run, more than the "
+                << available/1073741824.0 << " GiB of memory available";
+        }
+        FatalIOError
+            << ". Is a spacing too small?" << exit(FatalIOError);
+    }
+}
+
+
+Foam::scalar Foam::particleGenerator::availableMemory()
+{
+    // MemAvailable of /proc/meminfo [kB]; unlimited if it cannot be read
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key;
+    scalar kB = 0;
+    std::string unit;
+    while (meminfo >> key >> kB >> unit)
+    {
+        if (key == "MemAvailable:")
+        {
+            return 1024*kB;
+        }
+    }
+    return GREAT;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::particleGenerator::generate
@@ -141,13 +240,15 @@ void Foam::particleGenerator::generate
 {
     cloud.clear();
 
-    const dictionary& regionsDict = dict_.subDict("regions");
+    const dictionary& regionsDict = inputChecks::subDict(dict_, "regions");
     if (regionsDict.empty())
     {
         FatalIOErrorInFunction(regionsDict)
             << "No regions: add one sub-dictionary per region of particles"
             << exit(FatalIOError);
     }
+
+    checkSize(regionsDict);
 
     const scalar tol = 1e-9*mag(domain.span());
 
@@ -163,30 +264,8 @@ void Foam::particleGenerator::generate
         const word& name = e.keyword();
         const dictionary& rDict = e.dict();
 
-        const word kindName(rDict.get<word>("kind"));
-        if (!particleKindNames.found(kindName))
-        {
-            FatalIOErrorInFunction(rDict)
-                << "Entry 'kind' of region " << name << " is " << kindName
-                << "; valid kinds: " << flatOutput(particleKindNames.names())
-                << exit(FatalIOError);
-        }
-        const particleKind kind = particleKindNames[kindName];
-
-        const scalar spacing = rDict.getOrDefault<scalar>
-        (
-            "spacing",
-            kind == particleKind::structure
-          ? structureSpacing_
-          : fluidSpacing_
-        );
-        if (!(spacing > 0))
-        {
-            FatalIOErrorInFunction(rDict)
-                << "Entry 'spacing' of region " << name
-                << " must be positive, got " << spacing
-                << exit(FatalIOError);
-        }
+        const scalar spacing = regionSpacing(name, rDict);
+        const particleKind kind = particleKindNames[rDict.get<word>("kind")];
 
         autoPtr<particleShape> shape(particleShape::New(rDict));
 

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsKernel.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -21,7 +22,7 @@ Foam::autoPtr<Foam::mpsKernel> Foam::mpsKernel::New
     const scalar re
 )
 {
-    const dictionary& kernelDict = dict.subDict("kernel");
+    const dictionary& kernelDict = inputChecks::subDict(dict, "kernel");
     const word modelType(kernelDict.get<word>("type"));
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);

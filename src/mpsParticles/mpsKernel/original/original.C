@@ -13,6 +13,7 @@ License
 
 #include "original.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -31,7 +32,9 @@ namespace mpsKernels
 Foam::mpsKernels::original::original(const dictionary& dict, const scalar re)
 :
     mpsKernel(dict, re)
-{}
+{
+    inputChecks::keywords(dict, {"type"}, "kernel original");
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

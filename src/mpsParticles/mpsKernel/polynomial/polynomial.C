@@ -13,6 +13,7 @@ License
 
 #include "polynomial.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -31,7 +32,9 @@ namespace mpsKernels
 Foam::mpsKernels::polynomial::polynomial(const dictionary& dict, const scalar re)
 :
     mpsKernel(dict, re)
-{}
+{
+    inputChecks::keywords(dict, {"type"}, "kernel polynomial");
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -19,6 +19,7 @@ License
 
 #include "BoomerAMG.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 #include <cstdlib>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -126,6 +127,12 @@ Foam::pressureSolvers::BoomerAMG::BoomerAMG(const dictionary& dict)
     reuse_(dict.getOrDefault<label>("reuse", 10)),
     hierarchy_(new hierarchy)
 {
+    inputChecks::keywords
+    (
+        dict,
+        {"type", "tolerance", "maxIter", "strongThreshold", "reuse"},
+        "pressureSolver BoomerAMG"
+    );
     if (reuse_ < 1)
     {
         FatalIOErrorInFunction(dict)

@@ -13,6 +13,7 @@ License
 
 #include "PCG.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 #include <Eigen/IterativeLinearSolvers>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -79,7 +80,14 @@ Foam::pressureSolvers::PCG::PCG(const dictionary& dict)
             preconditionerType::diagonal
         )
     )
-{}
+{
+    inputChecks::keywords
+    (
+        dict,
+        {"type", "tolerance", "maxIter", "preconditioner"},
+        "pressureSolver PCG"
+    );
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "pressureSolver.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -20,7 +21,8 @@ Foam::autoPtr<Foam::pressureSolver> Foam::pressureSolver::New
     const dictionary& mpsProperties
 )
 {
-    const dictionary& dict = mpsProperties.subDict("pressureSolver");
+    const dictionary& dict =
+        inputChecks::subDict(mpsProperties, "pressureSolver");
     const word modelType(dict.get<word>("type"));
 
     Info<< "Selecting pressureSolver model " << modelType << endl;

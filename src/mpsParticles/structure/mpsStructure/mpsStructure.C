@@ -13,6 +13,7 @@ License
 
 #include "mpsStructure.H"
 #include "lagrangianCloudReader.H"
+#include "inputChecks.H"
 #include "Time.H"
 #include "clockValue.H"
 #include "IOField.H"
@@ -122,6 +123,12 @@ void Foam::mpsStructure::readLoads(const dictionary& loadsDict)
                 << exit(FatalIOError);
         }
         const dictionary& d = e.dict();
+        inputChecks::keywords
+        (
+            d,
+            {"region", "normal", "pressure", "pressureCoeffs"},
+            "load " + e.keyword()
+        );
         surfaceLoad* load = new surfaceLoad;
         load->name = e.keyword();
         load->normal = d.get<vector2D>("normal");
@@ -167,19 +174,114 @@ Foam::label Foam::mpsStructure::regionIndex
 
 void Foam::mpsStructure::checkFinite(const scalar t) const
 {
+    const label step = db().time().timeIndex();
     forAll(model_->x(), k)
     {
         const vector2D& x = model_->x()[k];
-        if (!std::isfinite(x.x()) || !std::isfinite(x.y()))
+        const bool finite = std::isfinite(x.x()) && std::isfinite(x.y());
+        if
+        (
+            !finite
+         || x.x() < domain_.min().x() || x.x() > domain_.max().x()
+         || x.y() < domain_.min().y() || x.y() > domain_.max().y()
+        )
         {
             FatalErrorInFunction
                 << "The structure diverged in the fluid step ending at"
-                << " time " << t << ": particle " << k << " (reference "
-                << model_->X()[k] << ") is not finite. Nothing of this"
-                << " step was written; the last written time is intact."
-                << exit(FatalError);
+                << " time " << t << " (step " << step << "): particle " << k
+                << " (reference " << model_->X()[k] << ") is "
+                << (finite ? "outside the domain" : "not finite");
+            if (finite)
+            {
+                FatalError
+                    << ", at " << x << " (the background mesh spans "
+                    << domain_.min() << " to " << domain_.max() << ")";
+            }
+            FatalError
+                << ". Nothing of this step was written; the last written"
+                << " time is intact. Is a load too large, or the structural"
+                << " step too long?" << exit(FatalError);
         }
     }
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::mpsStructure::spacing
+(
+    const dictionary& dict,
+    const scalar l0
+)
+{
+    inputChecks::keywords
+    (
+        dict,
+        {
+            "structureModel", "rho", "E", "nu", "planeStrain", "spacing",
+            "spacingRatio", "nSubSteps", "deltaT", "damping", "g",
+            "clamped", "clampedVelocity", "bodyMotion", "initialVelocity",
+            "loads", "coupling"
+        },
+        "constant/structureProperties"
+    );
+    inputChecks::values
+    (
+        dict,
+        {
+            "rho", "E", "nu", "planeStrain", "spacing", "spacingRatio",
+            "nSubSteps", "deltaT", "damping", "g", "clamped",
+            "clampedVelocity"
+        }
+    );
+    inputChecks::exclusive(dict, {"spacing", "spacingRatio"});
+    inputChecks::exclusive(dict, {"nSubSteps", "deltaT"});
+    inputChecks::exclusive(dict, {"clampedVelocity", "bodyMotion"});
+    for (const word& d : {"bodyMotion", "initialVelocity", "loads", "coupling"})
+    {
+        inputChecks::optionalDict(dict, d);
+    }
+    if (const dictionary* iv = dict.findDict("initialVelocity"))
+    {
+        inputChecks::keywords
+        (
+            *iv,
+            {"region", "origin", "axis", "velocity", "velocityCoeffs"},
+            "initialVelocity"
+        );
+    }
+    if (const dictionary* coupling = dict.findDict("coupling"))
+    {
+        inputChecks::keywords
+        (
+            *coupling, {"walls", "pressureRadius"}, "coupling"
+        );
+    }
+
+    if (dict.found("spacing"))
+    {
+        const scalar ds = dict.get<scalar>("spacing");
+        if (!(ds > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'spacing' (structural particle spacing [m]) must"
+                << " be positive, got " << ds << exit(FatalIOError);
+        }
+        return ds;
+    }
+    if (dict.found("spacingRatio"))
+    {
+        const scalar ratio = dict.get<scalar>("spacingRatio");
+        if (!(ratio >= 1))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'spacingRatio' (fluid l0 over structural spacing)"
+                << " must be at least 1, got " << ratio
+                << exit(FatalIOError);
+        }
+        return l0/ratio;
+    }
+    return l0;
 }
 
 
@@ -207,6 +309,12 @@ Foam::mpsStructure::mpsStructure
     ),
     cloud_(cloud),
     dict_(structureProperties),
+    domain_
+    (
+        isA<polyMesh>(db)
+      ? refCast<const polyMesh>(db).bounds()
+      : boundBox(point::uniform(-GREAT), point::uniform(GREAT))
+    ),
     fluidDeltaT_(-1),
     nSubSteps_(0),
     totalSubSteps_(0),

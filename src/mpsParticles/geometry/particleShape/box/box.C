@@ -13,6 +13,7 @@ License
 
 #include "box.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -34,6 +35,12 @@ Foam::particleShapes::box::box(const dictionary& dict)
     min_(dict.get<vector2D>("min")),
     max_(dict.get<vector2D>("max"))
 {
+    inputChecks::keywords
+    (
+        dict,
+        {"type", "kind", "spacing", "min", "max"},
+        "region " + dict.dictName()
+    );
     if (!(max_.x() > min_.x() && max_.y() > min_.y()))
     {
         FatalIOErrorInFunction(dict)
@@ -44,6 +51,16 @@ Foam::particleShapes::box::box(const dictionary& dict)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::particleShapes::box::estimatedCount
+(
+    const scalar spacing
+) const
+{
+    const vector2D span(max_ - min_);
+    return (span.x()/spacing + 1)*(span.y()/spacing + 1);
+}
+
 
 void Foam::particleShapes::box::generate
 (

@@ -29,7 +29,7 @@ Foam::autoPtr<Foam::particleShape> Foam::particleShape::New
         FatalIOErrorInLookup
         (
             dict,
-            "type",
+            "shape",
             shapeType,
             *dictionaryConstructorTablePtr_
         ) << exit(FatalIOError);

@@ -13,6 +13,7 @@ License
 
 #include "strip.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -38,6 +39,17 @@ Foam::particleShapes::strip::strip(const dictionary& dict)
     thickness_(0),
     offset_(dict.getOrDefault<scalar>("offset", 0))
 {
+    inputChecks::keywords
+    (
+        dict,
+        {
+            "type", "kind", "spacing", "dummyLayers", "points", "start",
+            "angle", "length", "side", "layers", "thickness", "offset"
+        },
+        "region " + dict.dictName()
+    );
+    inputChecks::exclusive(dict, {"points", "start"});
+    inputChecks::exclusive(dict, {"layers", "thickness"});
     if (dict.found("points"))
     {
         dict.readEntry("points", points_);
@@ -136,6 +148,23 @@ Foam::label Foam::particleShapes::strip::nLayers(const scalar spacing) const
         return layers_;
     }
     return max(label(1), label(std::round(thickness_/spacing)));
+}
+
+
+Foam::scalar Foam::particleShapes::strip::estimatedCount
+(
+    const scalar spacing
+) const
+{
+    // Each segment and its corner extensions, times the layers
+    const scalar depth = offset_ + nLayers(spacing)*spacing;
+    scalar n = 0;
+    for (label segi = 0; segi + 1 < points_.size(); ++segi)
+    {
+        n += (mag(points_[segi + 1] - points_[segi]) + 2*mag(depth))/spacing
+          + 1;
+    }
+    return n*nLayers(spacing);
 }
 
 

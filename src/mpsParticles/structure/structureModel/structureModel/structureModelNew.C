@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "structureModel.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -23,7 +24,9 @@ Foam::autoPtr<Foam::structureModel> Foam::structureModel::New
     const scalar spacing
 )
 {
-    const dictionary& modelDict = dict.subDict("structureModel");
+    const dictionary& modelDict =
+        inputChecks::subDict(dict, "structureModel");
+    inputChecks::keywords(modelDict, {"type"}, "structureModel");
     const word modelType(modelDict.get<word>("type"));
 
     Info<< "Selecting structure model " << modelType << endl;

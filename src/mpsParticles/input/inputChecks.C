@@ -1,0 +1,217 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "inputChecks.H"
+#include "DynamicList.H"
+#include <cctype>
+#include <vector>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Levenshtein distance, letter case ignored
+Foam::label editDistance(const std::string& a, const std::string& b)
+{
+    const std::size_t n = a.size(), m = b.size();
+    std::vector<Foam::label> prev(m + 1), cur(m + 1);
+    for (std::size_t j = 0; j <= m; ++j)
+    {
+        prev[j] = j;
+    }
+    for (std::size_t i = 1; i <= n; ++i)
+    {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= m; ++j)
+        {
+            const bool same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+            cur[j] = std::min
+            (
+                std::min(prev[j] + 1, cur[j - 1] + 1),
+                prev[j - 1] + (same ? 0 : 1)
+            );
+        }
+        std::swap(prev, cur);
+    }
+    return prev[m];
+}
+
+// Words separated by spaces
+std::string words(const Foam::UList<Foam::word>& list)
+{
+    std::string s;
+    for (const Foam::word& w : list)
+    {
+        s += (s.empty() ? "" : " ") + w;
+    }
+    return s;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
+
+Foam::word Foam::inputChecks::nearest(const word& key, const wordList& valid)
+{
+    word best;
+    label bestDistance = max(label(1), label(key.size()/2)) + 1;
+    for (const word& v : valid)
+    {
+        const label d = editDistance(key, v);
+        if (d < bestDistance)
+        {
+            bestDistance = d;
+            best = v;
+        }
+    }
+    return best;
+}
+
+
+void Foam::inputChecks::keywords
+(
+    const dictionary& dict,
+    const wordList& valid,
+    const string& what
+)
+{
+    for (const entry& e : dict)
+    {
+        const word& key = e.keyword();
+        if (key == "FoamFile" || valid.found(key))
+        {
+            continue;
+        }
+        const word near(nearest(key, valid));
+        FatalIOErrorInFunction(dict)
+            << "Unknown entry '" << key << "'";
+        if (what.size())
+        {
+            FatalIOError<< " in " << what.c_str();
+        }
+        if (near.size())
+        {
+            FatalIOError<< " (did you mean '" << near << "'?)";
+        }
+        FatalIOError
+            << nl << "Valid entries: " << words(valid).c_str()
+            << exit(FatalIOError);
+    }
+}
+
+
+const Foam::dictionary& Foam::inputChecks::subDict
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const dictionary* d = optionalDict(dict, key);
+    if (!d)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' (a dictionary { ... }) is missing"
+            << exit(FatalIOError);
+    }
+    return *d;
+}
+
+
+const Foam::dictionary* Foam::inputChecks::optionalDict
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (!e)
+    {
+        return nullptr;
+    }
+    if (!e->isDict())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' must be a dictionary { ... }, got '"
+            << e->stream().toString().c_str() << "'" << exit(FatalIOError);
+    }
+    return &e->dict();
+}
+
+
+void Foam::inputChecks::value(const dictionary& dict, const word& key)
+{
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (e && e->isDict())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' must be a value, not a dictionary"
+            << " { ... }" << exit(FatalIOError);
+    }
+}
+
+
+void Foam::inputChecks::values(const dictionary& dict, const wordList& keys)
+{
+    for (const word& key : keys)
+    {
+        value(dict, key);
+    }
+}
+
+
+Foam::wordList Foam::inputChecks::functionObjectKeywords
+(
+    std::initializer_list<word> own
+)
+{
+    wordList keys
+    ({
+        "type", "libs", "region", "enabled", "log", "timeStart", "timeEnd",
+        "executeControl", "executeInterval", "writeControl",
+        "writeInterval", "writePrecision", "writeToFile", "useUserTime"
+    });
+    for (const word& w : own)
+    {
+        keys.append(w);
+    }
+    return keys;
+}
+
+
+void Foam::inputChecks::exclusive
+(
+    const dictionary& dict,
+    const wordList& keys
+)
+{
+    DynamicList<word> given;
+    for (const word& key : keys)
+    {
+        if (dict.found(key, keyType::LITERAL))
+        {
+            given.append(key);
+        }
+    }
+    if (given.size() > 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries " << words(given).c_str() << " say the same thing"
+            << " in two ways: give one of " << words(keys).c_str()
+            << exit(FatalIOError);
+    }
+}
+
+
+// ************************************************************************* //
