@@ -227,6 +227,13 @@ Foam::fluidStructureInterface::fluidStructureInterface
     );
     labelHashSet regions;
     const wordList names(dict.get<wordList>("walls"));
+    if (names.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'walls' is empty: list the wall regions that follow"
+            << " the structure; valid wall regions: " << valid
+            << exit(FatalIOError);
+    }
     for (const word& name : names)
     {
         if (!valid.found(name))

@@ -14,6 +14,7 @@ License
 #include "strainProbes.H"
 #include "inputChecks.H"
 #include "mpsStructure.H"
+#include "mpsState.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -127,6 +128,11 @@ Foam::functionObjects::strainProbes::strainProbes
     // panel stops the run before any file is opened
     const mpsStructure* structure =
         mesh_.findObject<mpsStructure>(mpsStructure::typeName);
+    if (mesh_.foundObject<mpsState>(mpsState::typeName))
+    {
+        // In the solver: a case without structure stops here
+        mpsStructure::lookup(mesh_);
+    }
     if (structure && structure->active())
     {
         locate();

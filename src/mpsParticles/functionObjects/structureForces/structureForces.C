@@ -14,6 +14,7 @@ License
 #include "structureForces.H"
 #include "inputChecks.H"
 #include "fluidStructureInterface.H"
+#include "mpsState.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -42,6 +43,13 @@ Foam::functionObjects::structureForces::structureForces
     headerWritten_(false)
 {
     read(dict);
+
+    // In the solver (the particles registered), a case without coupling
+    // stops here, before anything is written
+    if (mesh_.foundObject<mpsState>(mpsState::typeName))
+    {
+        fluidStructureInterface::lookup(mesh_);
+    }
 }
 
 

@@ -14,6 +14,7 @@ License
 #include "structureProbes.H"
 #include "inputChecks.H"
 #include "mpsStructure.H"
+#include "mpsState.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -107,6 +108,11 @@ Foam::functionObjects::structureProbes::structureProbes
     // structure stops the run before anything is written
     const mpsStructure* structure =
         mesh_.findObject<mpsStructure>(mpsStructure::typeName);
+    if (mesh_.foundObject<mpsState>(mpsState::typeName))
+    {
+        // In the solver: a case without structure stops here
+        mpsStructure::lookup(mesh_);
+    }
     if (structure && structure->active())
     {
         locate(structure->model());
