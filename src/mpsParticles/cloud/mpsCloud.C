@@ -23,28 +23,41 @@ void Foam::mpsCloud::addField
     DynamicList<Type>& list,
     const word& name,
     const bool restart,
+    std::initializer_list<particleKind> kinds,
     const Type& initial
 )
 {
     fields_.append
     (
-        new mpsCloudListField<Type>(list, name, restart, initial)
+        new mpsCloudListField<Type>(list, name, restart, kinds, initial)
     );
 }
 
 
 void Foam::mpsCloud::addFields()
 {
-    // name, read back at a restart, value of a new particle
-    addField(x_, word::null, false, vector2D::zero);  // written as positions
-    addField(U_, "U", true, vector2D::zero);
-    addField(p_, "p", true, scalar(0));
-    addField(n_, "n", false, scalar(0));
-    addField(kind_, "kind", false, particleKind::fluid);
-    addField(region_, "region", false, label(-1));
-    addField(spacing_, word::null, false, scalar(0));
-    addField(id_, "id", false, label(-1));
-    addField(surface_, "freeSurface", false, false);
+    // name, read back at a restart, the kinds it means something for, the
+    // value of a new particle
+    const auto all =
+    {
+        particleKind::fluid, particleKind::wall, particleKind::dummy,
+        particleKind::structure
+    };
+    const auto fluidWall = {particleKind::fluid, particleKind::wall};
+    addField(x_, word::null, false, all, vector2D::zero);  // as positions
+    addField(U_, "U", true, all, vector2D::zero);
+    addField(p_, "p", true, fluidWall, scalar(0));
+    addField
+    (
+        n_, "n", false,
+        {particleKind::fluid, particleKind::wall, particleKind::dummy},
+        scalar(0)
+    );
+    addField(kind_, "kind", false, all, particleKind::fluid);
+    addField(region_, "region", false, all, label(-1));
+    addField(spacing_, word::null, false, all, scalar(0));
+    addField(id_, "id", false, all, label(-1));
+    addField(surface_, "freeSurface", false, fluidWall, false);
 }
 
 

@@ -331,6 +331,12 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
     ppeMatrix A(nUnknowns, nUnknowns);
     assemblePressure(dt, A, b, sol);
 
+    // The relative residual |b - A p|/|b| of the last step's pressure (the
+    // log's initial residual; the solvers' final one is the same measure)
+    const scalar bNorm = b.norm();
+    info_.ppeInitialResidual =
+        bNorm > 0 ? (b - A*sol).norm()/bNorm : scalar(0);
+
     clockValue solveClock(true);
     const pressureSolver::performance perf = solver_->solve(A, b, sol);
     lastSolveTime_ = solveClock.elapsed();

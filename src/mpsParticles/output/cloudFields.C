@@ -23,6 +23,7 @@ Foam::cloudFields::cloudFields
 )
 :
     name_(name),
+    regionNames_(cloud.regionNames()),
     ids_(cloud.select(kinds)),
     positions_(ids_.size())
 {
@@ -34,7 +35,7 @@ Foam::cloudFields::cloudFields
 
     for (const mpsCloudField& f : cloud.fields())
     {
-        if (!f.name().empty())
+        if (!f.name().empty() && f.appliesTo(kinds))
         {
             f.write(ids_, *this);
         }

@@ -77,9 +77,18 @@ void Foam::lagrangianCloudReader::readCloud
     }
     is.readEnd("positions");
 
+    const bool structure = cloudName == "structure";
     for (mpsCloudField& f : cloud.fields())
     {
-        if (f.restart())
+        if
+        (
+            f.restart()
+         && (
+                structure
+              ? f.appliesTo({particleKind::structure})
+              : f.appliesTo({particleKind::fluid, particleKind::wall})
+            )
+        )
         {
             f.read(io(f.name()), index);
         }

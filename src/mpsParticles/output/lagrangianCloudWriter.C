@@ -142,6 +142,7 @@ void Foam::lagrangianCloudWriter::write
         )
     );
     props.add("geometry", word("positions"));
+    props.add("regions", cloud.regionNames());   // the field region's names
     dictionary procDict;
     procDict.add("particleCount", cloud.size());
     props.add("processor0", procDict);

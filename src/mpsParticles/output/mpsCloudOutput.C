@@ -21,7 +21,8 @@ Foam::mpsCloudOutput::mpsCloudOutput(const polyMesh& mesh)
 :
     mesh_(mesh),
     lagrangian_(mesh),
-    vtk_(mesh.time())
+    vtk_(mesh.time()),
+    writeVTK_(mesh.time().controlDict().getOrDefault<bool>("writeVTK", true))
 {}
 
 
@@ -108,7 +109,7 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
 
     for (const cloudFields& c : clouds)
     {
-        if (c.size())
+        if (c.size() && writeVTK_)
         {
             vtk_.write(c);
         }
