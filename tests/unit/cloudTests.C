@@ -144,7 +144,7 @@ TEST_CASE("cloud keeps kinds in order and ids with their fields")
 
     SECTION("the table of fields is what output writes")
     {
-        const cloudFields out("wall", c, {particleKind::wall, particleKind::dummy});
+        const cloudFields out("wall", c);
         CHECK(out.size() == 5);
         CHECK(out.vectorFields().found("U"));
         CHECK(out.scalarFields().found("p"));
@@ -154,6 +154,14 @@ TEST_CASE("cloud keeps kinds in order and ids with their fields")
             CHECK(out.labelFields().found(f));
         }
         CHECK(!out.scalarFields().found("spacing"));
+
+        // The structure's cloud carries no fluid quantities
+        const cloudFields solid("structure", c);
+        CHECK(solid.size() == 3);
+        CHECK(solid.vectorFields().found("U"));
+        CHECK(!solid.scalarFields().found("p"));
+        CHECK(!solid.scalarFields().found("n"));
+        CHECK(!solid.labelFields().found("freeSurface"));
         const labelField& id = out.labelFields()["id"];
         const scalarField& p = out.scalarFields()["p"];
         forAll(id, k)
@@ -243,12 +251,12 @@ TEST_CASE("output round trip: a written cloud reads back exactly")
     const lagrangianCloudWriter writer(mesh);
     writer.write
     (
-        cloudFields("fluid", written, {particleKind::fluid}),
+        cloudFields("fluid", written),
         runTime.timeName()
     );
     writer.write
     (
-        cloudFields("wall", written, {particleKind::wall, particleKind::dummy}),
+        cloudFields("wall", written),
         runTime.timeName()
     );
     IOstream::defaultPrecision(precision);

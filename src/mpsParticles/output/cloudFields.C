@@ -12,30 +12,45 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "cloudFields.H"
+#include "outputClouds.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFields::cloudFields
-(
-    const word& name,
-    const mpsCloud& cloud,
-    std::initializer_list<particleKind> kinds
-)
+Foam::cloudFields::cloudFields(const word& name, const mpsCloud& cloud)
 :
     name_(name),
-    regionNames_(cloud.regionNames()),
-    ids_(cloud.select(kinds)),
-    positions_(ids_.size())
+    regionNames_(cloud.regionNames())
 {
+    DynamicList<label> ids;
+    forAll(cloud.kind(), i)
+    {
+        if (outputClouds::holds(name, cloud.kind()[i]))
+        {
+            ids.append(i);
+        }
+    }
+    ids_.transfer(ids);
+
+    positions_.setSize(ids_.size());
     forAll(ids_, k)
     {
         const vector2D& x = cloud.x()[ids_[k]];
         positions_[k] = point(x.x(), x.y(), 0);
     }
 
+    // The fields that mean something for a kind the cloud holds
     for (const mpsCloudField& f : cloud.fields())
     {
-        if (!f.name().empty() && f.appliesTo(kinds))
+        bool applies = false;
+        for (int k = 0; k < nParticleKinds; ++k)
+        {
+            applies = applies
+             || (
+                    f.appliesTo(particleKind(k))
+                 && outputClouds::holds(name, particleKind(k))
+                );
+        }
+        if (!f.name().empty() && applies)
         {
             f.write(ids_, *this);
         }

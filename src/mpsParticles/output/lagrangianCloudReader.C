@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "lagrangianCloudReader.H"
+#include "outputClouds.H"
 #include "cloud.H"
 #include "IOField.H"
 #include "IFstream.H"
@@ -77,18 +78,20 @@ void Foam::lagrangianCloudReader::readCloud
     }
     is.readEnd("positions");
 
-    const bool structure = cloudName == "structure";
+    // The fields marked for a restart that mean something for the cloud's
+    // kinds (the cloud's writer wrote those)
     for (mpsCloudField& f : cloud.fields())
     {
-        if
-        (
-            f.restart()
-         && (
-                structure
-              ? f.appliesTo({particleKind::structure})
-              : f.appliesTo({particleKind::fluid, particleKind::wall})
-            )
-        )
+        bool applies = false;
+        for (int k = 0; k < nParticleKinds; ++k)
+        {
+            applies = applies
+             || (
+                    f.appliesTo(particleKind(k))
+                 && outputClouds::holds(cloudName, particleKind(k))
+                );
+        }
+        if (f.restart() && applies)
         {
             f.read(io(f.name()), index);
         }
@@ -125,20 +128,22 @@ Foam::IOobject Foam::lagrangianCloudReader::fieldIO
 }
 
 
-bool Foam::lagrangianCloudReader::found() const
+bool Foam::lagrangianCloudReader::hasClouds(const fileName& timeDir)
 {
-    const fileName dir
-    (
-        mesh_.time().path()/mesh_.time().timeName()/cloud::prefix
-    );
-    for (const word& c : {"fluid", "wall", "structure"})
+    for (const word& c : outputClouds::names())
     {
-        if (isFile(dir/c/"positions"))
+        if (isFile(timeDir/cloud::prefix/c/"positions"))
         {
             return true;
         }
     }
     return false;
+}
+
+
+bool Foam::lagrangianCloudReader::found() const
+{
+    return hasClouds(mesh_.time().path()/mesh_.time().timeName());
 }
 
 
@@ -148,23 +153,24 @@ void Foam::lagrangianCloudReader::checkComplete(const mpsCloud& cloud) const
     (
         mesh_.time().path()/mesh_.time().timeName()/cloud::prefix
     );
-    const label counts[] =
+    for (const word& c : outputClouds::names())
     {
-        cloud.count(particleKind::fluid),
-        cloud.count(particleKind::wall) + cloud.count(particleKind::dummy),
-        cloud.count(particleKind::structure)
-    };
-    const word names[] = {"fluid", "wall", "structure"};
-    for (int c = 0; c < 3; ++c)
-    {
-        const fileName positions(dir/names[c]/"positions");
-        if (counts[c] && !isFile(positions))
+        label count = 0;
+        for (int k = 0; k < nParticleKinds; ++k)
+        {
+            if (outputClouds::holds(c, particleKind(k)))
+            {
+                count += cloud.count(particleKind(k));
+            }
+        }
+        const fileName positions(dir/c/"positions");
+        if (count && !isFile(positions))
         {
             FatalErrorInFunction
                 << "Cannot continue from time " << mesh_.time().timeName()
-                << ": it has no cloud " << names[c] << " (no file "
-                << positions << "), where system/particleDict makes "
-                << counts[c] << " particles of it." << nl
+                << ": it has no cloud " << c << " (no file " << positions
+                << "), where system/particleDict makes " << count
+                << " particles of it." << nl
                 << "Start from a time that has every cloud, or from 0 (the"
                 << " particles generated anew)" << exit(FatalError);
         }
@@ -175,7 +181,7 @@ void Foam::lagrangianCloudReader::checkComplete(const mpsCloud& cloud) const
 void Foam::lagrangianCloudReader::read(mpsCloud& cloud) const
 {
     List<bool> found(cloud.size(), false);
-    for (const word& c : {"fluid", "wall", "structure"})
+    for (const word& c : outputClouds::names())
     {
         readCloud(c, cloud, found);
     }

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsCloudOutput.H"
+#include "outputClouds.H"
 #include "Time.H"
 #include "OSspecific.H"
 
@@ -70,12 +71,11 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
         rmDir(stagingDir);
     }
 
-    cloudFields clouds[] =
+    PtrList<cloudFields> clouds(outputClouds::names().size());
+    forAll(clouds, i)
     {
-        cloudFields("fluid", cloud, {particleKind::fluid}),
-        cloudFields("wall", cloud, {particleKind::wall, particleKind::dummy}),
-        cloudFields("structure", cloud, {particleKind::structure})
-    };
+        clouds.set(i, new cloudFields(outputClouds::names()[i], cloud));
+    }
 
     for (cloudFields& c : clouds)
     {
