@@ -23,15 +23,24 @@ License
 namespace Foam
 {
 
-// Write an object into its own instance (regIOobject::write would put it in
-// the current time's folder whatever its instance says)
-static void writeInto(const regIOobject& obj)
+// Where an object goes: in the folder (under the case) in place of its
+// instance, which its header names as its location
+static fileName staged(const IOobject& io, const fileName& folder)
+{
+    return io.time().path()/folder/io.db().dbDir()/io.local()/io.name();
+}
+
+
+// Write an object into the folder (regIOobject::write would put it in the
+// current time's folder whatever its instance says)
+static void writeInto(const regIOobject& obj, const fileName& folder)
 {
     const Time& runTime = obj.time();
-    mkDir(obj.path());
+    const fileName file(staged(obj, folder));
+    mkDir(file.path());
     OFstream os
     (
-        obj.objectPath(),
+        file,
         runTime.writeFormat(),
         IOstream::currentVersion,
         runTime.writeCompression()
@@ -52,6 +61,7 @@ static void writeFields
 (
     const objectRegistry& db,
     const fileName& instance,
+    const fileName& folder,
     const fileName& local,
     const HashTable<Field<Type>>& fields
 )
@@ -72,7 +82,7 @@ static void writeFields
             ),
             iter.val()
         );
-        writeInto(fld);
+        writeInto(fld, folder);
     }
 }
 
@@ -92,7 +102,8 @@ Foam::lagrangianCloudWriter::lagrangianCloudWriter(const polyMesh& mesh)
 void Foam::lagrangianCloudWriter::write
 (
     const cloudFields& cloud,
-    const fileName& instance
+    const fileName& instance,
+    const fileName& folder
 ) const
 {
     const fileName local(cloud::prefix/cloud.name());
@@ -109,8 +120,9 @@ void Foam::lagrangianCloudWriter::write
             IOobject::NO_WRITE,
             false
         );
-        mkDir(io.path());
-        OFstream os(io.objectPath());
+        const fileName file(staged(io, folder));
+        mkDir(file.path());
+        OFstream os(file);
         io.writeHeader(os, "Cloud<passiveParticle>");
 
         const pointField& x = cloud.positions();
@@ -123,9 +135,9 @@ void Foam::lagrangianCloudWriter::write
         IOobject::writeEndDivider(os);
     }
 
-    writeFields(mesh_, instance, local, cloud.vectorFields());
-    writeFields(mesh_, instance, local, cloud.scalarFields());
-    writeFields(mesh_, instance, local, cloud.labelFields());
+    writeFields(mesh_, instance, folder, local, cloud.vectorFields());
+    writeFields(mesh_, instance, folder, local, cloud.scalarFields());
+    writeFields(mesh_, instance, folder, local, cloud.labelFields());
 
     // uniform/lagrangian/<cloud>/cloudProperties
     IOdictionary props
@@ -146,7 +158,7 @@ void Foam::lagrangianCloudWriter::write
     dictionary procDict;
     procDict.add("particleCount", cloud.size());
     props.add("processor0", procDict);
-    writeInto(props);
+    writeInto(props, folder);
 }
 
 

@@ -90,7 +90,7 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
                 source.second->addFields(c.ids(), c);
             }
         }
-        lagrangian_.write(c, staging);
+        lagrangian_.write(c, runTime.timeName(), staging);
     }
 
     // OpenFOAM's own files of the time (uniform/time, written just before)
