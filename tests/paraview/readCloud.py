@@ -14,6 +14,8 @@
 #     readCloud <file>.vtp <expectedCount> [<field> <min> <max>]...
 #     readCloud <file>.pvd <time> <expectedCount> [<field> <min> <max>]...
 #     readCloud <file>.pvd --list
+# Any checking form also takes "--arrays a,b,c": the cloud's point arrays
+# must be exactly these.
 #
 # For every check one line is printed, "... OK" or "FAILED: ...".
 # Exit status: 0 all checks passed, 1 a check failed, 2 bad arguments.
@@ -55,6 +57,7 @@ usageText = """Usage:
   readCloud <file>.vtp <expectedCount> [<field> <min> <max>]...
   readCloud <file>.pvd <time> <expectedCount> [<field> <min> <max>]...
   readCloud <file>.pvd --list
+  (any checking form: --arrays a,b,c, the cloud's point arrays exactly)
 Reads with ParaView's OpenFOAM reader (a .foam case), PVD reader (.pvd) or
 XML PolyData reader (.vtp) and checks a cloud: its particle count and, per
 <field> (a point array, or 'positions'), that min and max over all
@@ -91,6 +94,17 @@ def count(s):
     if n < 0:
         badArguments("bad expectedCount '%s'" % s)
     return n
+
+
+def arraysOption(args):
+    """Takes "--arrays a,b,c" out of args: the cloud's point arrays must be
+    exactly these (None if not given)."""
+    if "--arrays" not in args:
+        return args, None
+    i = args.index("--arrays")
+    if i + 1 >= len(args):
+        badArguments("--arrays needs a comma-separated list")
+    return args[:i] + args[i + 2:], sorted(a for a in args[i + 1].split(",") if a)
 
 
 def fieldChecks(args):
@@ -153,11 +167,16 @@ def arrays(ds):
     return [pd.GetArrayName(i) for i in range(pd.GetNumberOfArrays())]
 
 
-def checkCloud(chk, ds, label, expectedCount, fields):
-    """The point count of ds, then each field's tuples and range."""
+def checkCloud(chk, ds, label, expectedCount, fields, expectedArrays=None):
+    """The point count of ds, its arrays (if given), then each field's
+    tuples and range."""
     n = ds.GetNumberOfPoints()
     msg = "%s: %d points (expected %d)" % (label, n, expectedCount)
     (chk.ok if n == expectedCount else chk.fail)(msg)
+    if expectedArrays is not None:
+        have = sorted(arrays(ds))
+        msg = "%s: arrays %s (expected %s)" % (label, " ".join(have), " ".join(expectedArrays))
+        (chk.ok if have == expectedArrays else chk.fail)(msg)
     for name, lo, hi in fields:
         what = "field " + name
         if name == "positions":
@@ -190,7 +209,7 @@ def checkCloud(chk, ds, label, expectedCount, fields):
             chk.ok(msg)
 
 
-def checkPolyData(chk, poly, label, expectedCount, fields):
+def checkPolyData(chk, poly, label, expectedCount, fields, expectedArrays=None):
     """A particle file: vertices, TimeValue, then the cloud checks."""
     nVerts = poly.GetNumberOfVerts()
     msg = ("verts: %d vertex cells (expected %d, one per point; %d cells in all)"
@@ -201,7 +220,7 @@ def checkPolyData(chk, poly, label, expectedCount, fields):
         chk.fail("%s: no FieldData array TimeValue" % label)
     else:
         chk.ok("%s: TimeValue %s" % (label, fmt(t.GetComponent(0, 0))))
-    checkCloud(chk, poly, label, expectedCount, fields)
+    checkCloud(chk, poly, label, expectedCount, fields, expectedArrays)
 
 
 def leaves(mb, prefix=""):
@@ -239,6 +258,7 @@ def sameTime(t, time):
 
 
 def foamMode(args):
+    args, expectedArrays = arraysOption(args)
     listMode = len(args) == 3 and args[2] == "--list"
     if not listMode and (len(args) < 4 or (len(args) - 4) % 3):
         badArguments()
@@ -309,11 +329,12 @@ def foamMode(args):
         chk.fail("cloud %s: no block '%s' in the reader's output (blocks: %s)"
                  % (cloud, entry, ", ".join(p for p, _ in blocks) or "none"))
     else:
-        checkCloud(chk, found[0], "cloud " + cloud, expectedCount, fields)
+        checkCloud(chk, found[0], "cloud " + cloud, expectedCount, fields, expectedArrays)
     return chk.status()
 
 
 def pvdMode(args):
+    args, expectedArrays = arraysOption(args)
     listMode = len(args) == 2 and args[1] == "--list"
     if not listMode and (len(args) < 3 or (len(args) - 3) % 3):
         badArguments()
@@ -341,11 +362,13 @@ def pvdMode(args):
         chk.fail("%s at time %s: %s, not one PolyData (several parts?)"
                  % (pvdFile, args[1], data.GetClassName() if data else "nothing"))
         return chk.status()
-    checkPolyData(chk, data, "file %s at %s" % (pvdFile, args[1]), expectedCount, fields)
+    checkPolyData(chk, data, "file %s at %s" % (pvdFile, args[1]), expectedCount, fields,
+                  expectedArrays)
     return chk.status()
 
 
 def vtpMode(args):
+    args, expectedArrays = arraysOption(args)
     if len(args) < 2 or (len(args) - 2) % 3:
         badArguments()
     vtpFile, expectedCount, fields = args[0], count(args[1]), fieldChecks(args[2:])
@@ -354,7 +377,7 @@ def vtpMode(args):
         return 1
     chk = Checks()
     data = servermanager.Fetch(XMLPolyDataReader(FileName=[vtpFile]))
-    checkPolyData(chk, data, "file " + vtpFile, expectedCount, fields)
+    checkPolyData(chk, data, "file " + vtpFile, expectedCount, fields, expectedArrays)
     return chk.status()
 
 
@@ -369,4 +392,6 @@ def main(args):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    # From ./readCloud, one argument a line (pvpython would rewrite some)
+    given = os.environ.get("READCLOUD_ARGS")
+    sys.exit(main(given.split("\n") if given else sys.argv[1:]))
