@@ -20,6 +20,7 @@ License
 #include "BoomerAMG.H"
 #include "addToRunTimeSelectionTable.H"
 #include "inputChecks.H"
+#include "UPstream.H"
 #include <cstdlib>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -98,11 +99,14 @@ void Foam::pressureSolvers::BoomerAMG::initialise()
     }
     started = true;
 
+    // MPI through OpenFOAM's Pstream, so that OpenFOAM knows it started it
+    // and finalizes it at the end without a warning (UPstream::exit); a
+    // program without OpenFOAM's exit (the unit tests) finalizes it here
     int mpiStarted = 0;
     MPI_Initialized(&mpiStarted);
     if (!mpiStarted)
     {
-        MPI_Init(nullptr, nullptr);
+        UPstream::initNull();
         std::atexit([]()
         {
             int finalized = 0;
