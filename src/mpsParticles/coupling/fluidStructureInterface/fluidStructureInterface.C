@@ -308,6 +308,22 @@ void Foam::fluidStructureInterface::moveWalls()
 }
 
 
+bool Foam::fluidStructureInterface::referencePosition
+(
+    const label id,
+    vector2D& X
+) const
+{
+    const label k = attachedId_.find(id);
+    if (k < 0)
+    {
+        return false;
+    }
+    X = structure_.model().X()[anchor_[k]] + offset_[k];
+    return true;
+}
+
+
 const Foam::fluidStructureInterface& Foam::fluidStructureInterface::lookup
 (
     const objectRegistry& db

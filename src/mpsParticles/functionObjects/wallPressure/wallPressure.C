@@ -14,6 +14,7 @@ License
 #include "wallPressure.H"
 #include "inputChecks.H"
 #include "mpsState.H"
+#include "fluidStructureInterface.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "addToRunTimeSelectionTable.H"
@@ -30,73 +31,122 @@ namespace functionObjects
 }
 
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::functionObjects::wallPressure::wallPressure
-(
-    const word& name,
-    const Time& runTime,
-    const dictionary& dict
-)
-:
-    fvMeshFunctionObject(name, runTime, dict),
-    writeFile(mesh_, name),
-    Uref_(0),
-    pRef_(0)
+void Foam::functionObjects::wallPressure::setProbes()
 {
-    read(dict);
-
-    // The region is checked now, when the particles are there: a wrong
-    // name stops the run before anything is written
-    const mpsState* state = mesh_.findObject<mpsState>(mpsState::typeName);
-    if (state)
-    {
-        const wordList valid
+    const mpsState& state = mpsState::lookup(mesh_);
+    const mpsCloud& cloud = state.cloud();
+    const scalar l0 = state.fluid().l0();
+    const label r = cloud.regionIndex(regionName_);
+    const fluidStructureInterface* coupling =
+        mesh_.findObject<fluidStructureInterface>
         (
-            state->cloud().regionNames({particleKind::wall})
+            fluidStructureInterface::typeName
         );
-        if (!valid.found(regionName_))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'wall': " << regionName_ << " is not a region of"
-                << " wall particles in system/particleDict" << nl
-                << "Valid wall regions: " << valid << exit(FatalIOError);
-        }
-    }
-}
 
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-bool Foam::functionObjects::wallPressure::read(const dictionary& dict)
-{
-    fvMeshFunctionObject::read(dict);
-    inputChecks::keywords
+    // The region's wall particles in the reference state: where the
+    // structure they follow puts them there, else where they are
+    DynamicList<label> ids;
+    DynamicList<vector2D> X;
+    for
     (
-        dict,
-        inputChecks::functionObjectKeywords({"wall", "Uref", "pRef"}),
-        "function object " + name()
-    );
-    writeFile::read(dict);
-    regionName_ = dict.get<word>("wall");
-    Uref_ = dict.get<scalar>("Uref");
-    if (!(Uref_ > 0))
+        label i = cloud.begin(particleKind::wall);
+        i < cloud.end(particleKind::wall);
+        ++i
+    )
     {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'Uref' (reference speed [m/s]) must be positive, got "
-            << Uref_ << exit(FatalIOError);
+        if (cloud.region()[i] != r)
+        {
+            continue;
+        }
+        vector2D Xi(cloud.x()[i]);
+        if (coupling && coupling->active())
+        {
+            coupling->referencePosition(cloud.id()[i], Xi);
+        }
+        ids.append(cloud.id()[i]);
+        X.append(Xi);
     }
-    pRef_ = dict.getOrDefault<scalar>("pRef", 0);
-    return true;
+
+    const label nProbes = probeNames_.size();
+    idA_.setSize(nProbes);
+    idB_.setSize(nProbes);
+    weightB_.setSize(nProbes);
+    position0_.setSize(nProbes);
+    samples_.setSize(nProbes);
+    sums_.setSize(nProbes, Zero);
+
+    forAll(probeNames_, pi)
+    {
+        const dictionary& d = probesDict_.subDict(probeNames_[pi]);
+        const vector2D end(d.get<vector2D>("end"));
+        vector2D t(d.get<vector2D>("direction"));
+        const scalar distance = d.get<scalar>("distance");
+        if (mag(t) < SMALL)
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry 'direction' of transducer " << probeNames_[pi]
+                << " is zero: give the direction along the wall"
+                << exit(FatalIOError);
+        }
+        t /= mag(t);
+        const vector2D nrm(-t.y(), t.x());
+
+        // The wall layer nearest the line end + s t, for s from -l0 on
+        scalar nearest = GREAT;
+        forAll(X, j)
+        {
+            const vector2D d0(X[j] - end);
+            if ((d0 & t) >= -l0)
+            {
+                nearest = min(nearest, mag(d0 & nrm));
+            }
+        }
+        // ... and its two particles that straddle the distance
+        label a = -1, b = -1;
+        scalar sa = -GREAT, sb = GREAT;
+        forAll(X, j)
+        {
+            const vector2D d0(X[j] - end);
+            const scalar sj = d0 & t;
+            if (sj < -l0 || mag(d0 & nrm) > nearest + 0.5*l0)
+            {
+                continue;
+            }
+            if (sj <= distance && sj > sa)
+            {
+                sa = sj;
+                a = j;
+            }
+            if (sj > distance && sj < sb)
+            {
+                sb = sj;
+                b = j;
+            }
+        }
+        if (a < 0 || b < 0 || sb - sa > 1.5*l0)
+        {
+            FatalIOErrorInFunction(d)
+                << "Transducer " << probeNames_[pi] << ": no two wall"
+                << " particles of region " << regionName_ << " straddle the"
+                << " distance " << distance << " m from " << end
+                << " along " << t << " (the wall layer runs from "
+                << max(scalar(-l0), min(sa, sb)) << " to "
+                << max(sa, sb == GREAT ? sa : sb) << " m there)" << nl
+                << "Give a point at the end of the wall region and a"
+                << " distance along it" << exit(FatalIOError);
+        }
+        idA_[pi] = ids[a];
+        idB_[pi] = ids[b];
+        weightB_[pi] = (distance - sa)/(sb - sa);
+        position0_[pi] = (1 - weightB_[pi])*X[a] + weightB_[pi]*X[b];
+    }
 }
 
 
-bool Foam::functionObjects::wallPressure::write()
+void Foam::functionObjects::wallPressure::writeSnapshot() const
 {
-    if (!Pstream::master())
-    {
-        return true;
-    }
     const mpsState& state = mpsState::lookup(mesh_);
     const mpsCloud& cloud = state.cloud();
     const scalar q = 0.5*state.fluid().rho()*sqr(Uref_);
@@ -138,6 +188,205 @@ bool Foam::functionObjects::wallPressure::write()
         }
     }
     Foam::mv(path + ".tmp", path);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::wallPressure::wallPressure
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name),
+    Uref_(0),
+    pRef_(0),
+    filterWidth_(0)
+{
+    read(dict);
+
+    // The region is checked now, when the particles are there: a wrong
+    // name stops the run before anything is written
+    const mpsState* state = mesh_.findObject<mpsState>(mpsState::typeName);
+    if (state)
+    {
+        const wordList valid
+        (
+            state->cloud().regionNames({particleKind::wall})
+        );
+        if (!valid.found(regionName_))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'wall': " << regionName_ << " is not a region of"
+                << " wall particles in system/particleDict" << nl
+                << "Valid wall regions: " << valid << exit(FatalIOError);
+        }
+        setProbes();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::wallPressure::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    inputChecks::keywords
+    (
+        dict,
+        inputChecks::functionObjectKeywords
+        (
+            {"wall", "Uref", "pRef", "probes", "filterWidth"}
+        ),
+        "function object " + name()
+    );
+    writeFile::read(dict);
+    regionName_ = dict.get<word>("wall");
+    Uref_ = dict.get<scalar>("Uref");
+    if (!(Uref_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'Uref' (reference speed [m/s]) must be positive, got "
+            << Uref_ << exit(FatalIOError);
+    }
+    pRef_ = dict.getOrDefault<scalar>("pRef", 0);
+
+    const dictionary* probes = inputChecks::optionalDict(dict, "probes");
+    probesDict_ = probes ? *probes : dictionary();
+    probeNames_ = probesDict_.toc();
+    for (const word& probe : probeNames_)
+    {
+        if (!probesDict_.isDict(probe))
+        {
+            FatalIOErrorInFunction(probesDict_)
+                << "Entry 'probes': " << probe << " must be a dictionary"
+                << " { end (x y); direction (dx dy); distance d; }"
+                << exit(FatalIOError);
+        }
+        const dictionary& d = probesDict_.subDict(probe);
+        inputChecks::keywords
+        (
+            d,
+            {"end", "direction", "distance"},
+            "transducer " + probe + " of function object " + name()
+        );
+        for (const word key : {"end", "direction", "distance"})
+        {
+            if (!d.found(key))
+            {
+                FatalIOErrorInFunction(d)
+                    << "Transducer " << probe << ": entry '" << key
+                    << "' missing (entries: end (x y), direction (dx dy),"
+                    << " distance [m])" << exit(FatalIOError);
+            }
+        }
+    }
+    filterWidth_ = dict.getOrDefault<scalar>("filterWidth", 0);
+    if (filterWidth_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'filterWidth' (width of the running mean [s]) must"
+            << " not be negative, got " << filterWidth_
+            << exit(FatalIOError);
+    }
+    return true;
+}
+
+
+bool Foam::functionObjects::wallPressure::execute()
+{
+    if (probeNames_.empty())
+    {
+        return true;
+    }
+    const mpsCloud& cloud = mpsState::lookup(mesh_).cloud();
+    const scalar t = time_.value();
+    forAll(probeNames_, pi)
+    {
+        const scalar pa = cloud.p()[cloud.index(idA_[pi])];
+        const scalar pb = cloud.p()[cloud.index(idB_[pi])];
+        const scalar p = (1 - weightB_[pi])*pa + weightB_[pi]*pb;
+
+        // Running mean over (t - W, t]: the newest sample in, those that
+        // have left the window out (without a filter, the sample alone).
+        // Times that are W apart in exact arithmetic count as W apart
+        // (the time's round-off is far below 1e-9 W)
+        std::deque<std::pair<scalar, scalar>>& q = samples_[pi];
+        q.emplace_back(t, p);
+        sums_[pi] += p;
+        const scalar start = t - filterWidth_*(1 - 1e-9);
+        while (q.size() > 1 && !(q.front().first > start))
+        {
+            sums_[pi] -= q.front().second;
+            q.pop_front();
+        }
+    }
+    return true;
+}
+
+
+bool Foam::functionObjects::wallPressure::write()
+{
+    if (!Pstream::master())
+    {
+        return true;
+    }
+    if (time_.writeTime() || !probeNames_.size())
+    {
+        writeSnapshot();
+    }
+    if (probeNames_.empty())
+    {
+        return true;
+    }
+
+    if (!probeFile_)
+    {
+        probeFile_ = createFile("p");
+        OFstream& os = probeFile_();
+        writeHeader
+        (
+            os,
+            "Transducers on the wall region " + regionName_ + ": p [Pa]"
+        );
+        if (filterWidth_ > 0)
+        {
+            writeHeaderValue
+            (
+                os,
+                "filter",
+                "causal running mean over the time steps in (t - W, t],"
+                " W = " + Foam::name(filterWidth_) + " s (lags by W/2)"
+            );
+        }
+        else
+        {
+            writeHeaderValue(os, "filter", word("none"));
+        }
+        forAll(probeNames_, pi)
+        {
+            writeCommented(os, "Probe " + Foam::name(pi));
+            os  << ' ' << vector(position0_[pi].x(), position0_[pi].y(), 0)
+                << ' ' << probeNames_[pi] << nl;
+        }
+        writeCommented(os, "Time");
+        for (const word& probe : probeNames_)
+        {
+            writeTabbed(os, probe);
+        }
+        os  << endl;
+    }
+
+    OFstream& os = probeFile_();
+    writeCurrentTime(os);
+    forAll(probeNames_, pi)
+    {
+        os  << tab << sums_[pi]/max(label(1), label(samples_[pi].size()));
+    }
+    os  << endl;
     return true;
 }
 
