@@ -34,7 +34,7 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
         dict,
         {
             "rho", "nu", "g", "l0", "kernel", "re", "ppe", "freeSurface",
-            "collision", "pressureSolver"
+            "collision", "pressureSolver", "pressureGradient"
         },
         "constant/mpsProperties"
     );
@@ -366,46 +366,10 @@ void Foam::mpsFluid::correct(const scalar dt)
 {
     UList<vector2D>& x = cloud_.x();
     UList<vector2D>& U = cloud_.U();
-    const UList<scalar>& p = cloud_.p();
     const UList<particleKind>& kind = cloud_.kind();
-    const labelList& offsets = nbrs_.offsets();
-    const labelList& nbr = nbrs_.neighbours();
     const label n = cloud_.size();
-    const scalar coeff = 2/n0G_;
 
-    gradP_.setSize(n);
-
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        gradP_[i] = Zero;
-        if (kind[i] != particleKind::fluid)
-        {
-            continue;
-        }
-        // Minimum pressure over i and its pressure-carrying neighbours
-        scalar pMin = p[i];
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-        {
-            const label j = nbr[k];
-            if (kind[j] != particleKind::dummy && wG_[k] > 0)
-            {
-                pMin = min(pMin, p[j]);
-            }
-        }
-        vector2D grad(Zero);
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-        {
-            const label j = nbr[k];
-            if (kind[j] == particleKind::dummy)
-            {
-                continue;
-            }
-            const vector2D r(x[j] - x[i]);
-            grad += ((p[j] - pMin)*wG_[k]/max(magSqr(r), minR2_))*r;
-        }
-        gradP_[i] = coeff*grad;
-    }
+    gradient_->gradient(cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_);
 
     scalar maxSpeed2 = 0;
 
@@ -552,6 +516,7 @@ Foam::mpsFluid::mpsFluid
 
     freeSurface_ = freeSurfaceModel::New(dict);
     collision_ = collisionModel::New(dict);
+    gradient_ = pressureGradient::New(dict);
     solver_ = pressureSolver::New(dict);
 }
 

@@ -1,0 +1,141 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "corrected.H"
+#include "inputChecks.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace pressureGradients
+{
+    defineTypeNameAndDebug(corrected, 0);
+    addToRunTimeSelectionTable(pressureGradient, corrected, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pressureGradients::corrected::corrected(const dictionary& dict)
+:
+    pressureGradient(dict),
+    particleReference_(true),
+    minDeterminant_(dict.getOrDefault<scalar>("minDeterminant", 0.1))
+{
+    inputChecks::keywords
+    (
+        dict,
+        {"type", "reference", "minDeterminant"},
+        "pressureGradient corrected"
+    );
+    const word reference(dict.getOrDefault<word>("reference", "particle"));
+    if (reference != "particle" && reference != "minimum")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'reference': " << reference << " is not valid" << nl
+            << "Valid references: (particle minimum)" << exit(FatalIOError);
+    }
+    particleReference_ = (reference == "particle");
+    if (!(minDeterminant_ > 0 && minDeterminant_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'minDeterminant' must lie in (0, 1) (1: an isotropic"
+            << " neighbourhood), got " << minDeterminant_
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::pressureGradients::corrected::gradient
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const UList<scalar>& w,
+    const scalar n0,
+    const scalar minR2,
+    const UList<scalar>& p,
+    List<vector2D>& grad
+) const
+{
+    const UList<vector2D>& x = cloud.x();
+    const UList<particleKind>& kind = cloud.kind();
+    const labelList& offsets = nbrs.offsets();
+    const labelList& nbr = nbrs.neighbours();
+    const label n = cloud.size();
+    const scalar coeff = 2/n0;
+
+    grad.setSize(n);
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        grad[i] = Zero;
+        if (kind[i] != particleKind::fluid)
+        {
+            continue;
+        }
+        scalar pMin = p[i];
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            if (kind[j] != particleKind::dummy && w[k] > 0)
+            {
+                pMin = min(pMin, p[j]);
+            }
+        }
+        const scalar pRef = particleReference_ ? p[i] : pMin;
+
+        // The moment matrix sum w r r/r^2 and the sums of the two forms
+        scalar mxx = 0, mxy = 0, myy = 0;
+        vector2D sum(Zero);
+        vector2D sumMin(Zero);
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            if (kind[j] == particleKind::dummy || !(w[k] > 0))
+            {
+                continue;
+            }
+            const vector2D r(x[j] - x[i]);
+            const scalar a = w[k]/max(magSqr(r), minR2);
+            mxx += a*r.x()*r.x();
+            mxy += a*r.x()*r.y();
+            myy += a*r.y()*r.y();
+            sum += ((p[j] - pRef)*a)*r;
+            sumMin += ((p[j] - pMin)*a)*r;
+        }
+        const scalar det = mxx*myy - mxy*mxy;
+        const scalar half = 0.5*(mxx + myy);
+        if (det > minDeterminant_*half*half)
+        {
+            // C sum, C = [[myy, -mxy], [-mxy, mxx]]/det
+            grad[i] = vector2D
+            (
+                (myy*sum.x() - mxy*sum.y())/det,
+                (mxx*sum.y() - mxy*sum.x())/det
+            );
+        }
+        else
+        {
+            grad[i] = coeff*sumMin;
+        }
+    }
+}
+
+
+// ************************************************************************* //
