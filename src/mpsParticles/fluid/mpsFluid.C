@@ -627,4 +627,17 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
 }
 
 
+Foam::scalar Foam::mpsFluid::fluidPressureAt(const label i) const
+{
+    if (gradP_.size() != cloud_.size() || nbrs_.offsets().size() != cloud_.size() + 1)
+    {
+        return 0;   // before the first step
+    }
+    return pressureGradient::extrapolate
+    (
+        cloud_, nbrs_, kG_(), i, cloud_.p(), gradP_
+    );
+}
+
+
 // ************************************************************************* //

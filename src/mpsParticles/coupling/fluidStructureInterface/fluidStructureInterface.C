@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fluidStructureInterface.H"
+#include "mpsState.H"
 #include "Time.H"
 #include "clockValue.H"
 
@@ -145,6 +146,9 @@ void Foam::fluidStructureInterface::transferPressure()
     const labelList attached(cloud_.indices(attachedId_, "attached wall"));
     const scalarList& theta = structure_.model().theta();
 
+    const mpsFluid* fluid =
+        fluidPressure_ ? &mpsState::lookup(db()).fluid() : nullptr;
+
     force_ = Zero;
     fluidForce_ = Zero;
     forAll(walls_, m)
@@ -155,7 +159,11 @@ void Foam::fluidStructureInterface::transferPressure()
         (
             structureModel::rotate(theta[anchor_[k]], normal0_[m])
         );
-        const vector2D F(-cloud_.p()[i]*cloud_.spacing()[i]*n);
+        const scalar p =
+            fluidPressure_
+          ? max(scalar(0), fluid->fluidPressureAt(i))
+          : cloud_.p()[i];
+        const vector2D F(-p*cloud_.spacing()[i]*n);
         fluidForce_ += F;
         for (label e = weightStart_[m]; e < weightStart_[m + 1]; ++e)
         {
@@ -198,6 +206,7 @@ Foam::fluidStructureInterface::fluidStructureInterface
     cloud_(cloud),
     structure_(structure),
     l0_(l0),
+    fluidPressure_(false),
     fluidForce_(Zero),
     maxImbalance_(0),
     time_(0)
@@ -208,6 +217,15 @@ Foam::fluidStructureInterface::fluidStructureInterface
         return;
     }
     const dictionary& dict = *dictPtr;
+    const word wallPressure(dict.getOrDefault<word>("wallPressure", "solved"));
+    if (wallPressure != "solved" && wallPressure != "fluid")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'wallPressure': " << wallPressure << " is not valid"
+            << nl << "Valid wall pressures: (solved fluid)"
+            << exit(FatalIOError);
+    }
+    fluidPressure_ = (wallPressure == "fluid");
     if (!structure_.active())
     {
         FatalIOErrorInFunction(dict)

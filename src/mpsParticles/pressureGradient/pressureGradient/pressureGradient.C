@@ -30,4 +30,44 @@ Foam::pressureGradient::pressureGradient(const dictionary& dict)
 {}
 
 
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::scalar Foam::pressureGradient::extrapolate
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const mpsKernel& kernel,
+    const label i,
+    const UList<scalar>& p,
+    const UList<vector2D>& gradP
+)
+{
+    const UList<vector2D>& x = cloud.x();
+    const UList<particleKind>& kind = cloud.kind();
+    const labelList& offsets = nbrs.offsets();
+    const labelList& nbr = nbrs.neighbours();
+    const scalar re = kernel.re();
+    const scalar minR = 1e-3*re;
+
+    scalar sumW = 0, sumP = 0;
+    for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+    {
+        const label j = nbr[k];
+        if (kind[j] != particleKind::fluid)
+        {
+            continue;
+        }
+        const vector2D d(x[i] - x[j]);
+        const scalar r = mag(d);
+        if (r < re)
+        {
+            const scalar w = kernel.w(max(r, minR));
+            sumW += w;
+            sumP += w*(p[j] + (gradP[j] & d));
+        }
+    }
+    return sumW > 0 ? sumP/sumW : scalar(0);
+}
+
+
 // ************************************************************************* //

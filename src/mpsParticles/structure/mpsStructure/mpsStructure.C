@@ -254,7 +254,7 @@ Foam::scalar Foam::mpsStructure::spacing
     {
         inputChecks::keywords
         (
-            *coupling, {"walls", "pressureRadius"}, "coupling"
+            *coupling, {"walls", "pressureRadius", "wallPressure"}, "coupling"
         );
     }
 
