@@ -22,6 +22,7 @@ const Foam::Enum<Foam::mpsFluid::sourceType> Foam::mpsFluid::sourceTypeNames
 ({
     { sourceType::numberDensity, "numberDensity" },
     { sourceType::mixed, "mixed" },
+    { sourceType::higherOrder, "higherOrder" },
 });
 
 
@@ -311,14 +312,50 @@ void Foam::mpsFluid::assemblePressure
         }
 
         const scalar densitySource = rho_/sqr(dt)*(n0N_ - n[i])/n0N_;
-        const scalar rhs =
-            source_ == sourceType::mixed
-          ? rho_/dt*divCoeff*div + relaxation_*densitySource
-          : densitySource;
+        scalar rhs = densitySource;
+        if (source_ == sourceType::mixed)
+        {
+            rhs = rho_/dt*divCoeff*div + relaxation_*densitySource;
+        }
+        else if (source_ == sourceType::higherOrder)
+        {
+            rhs =
+               -rho_/(n0N_*dt)
+               *numberDensityRate(cloud_, nbrs_, kN_(), i, minR_)
+              + relaxation_*densitySource;
+        }
         b[row] = -rhs;
         sol[row] = p[i];
     }
 
+}
+
+
+Foam::scalar Foam::mpsFluid::numberDensityRate
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const mpsKernel& kernel,
+    const label i,
+    const scalar minR
+)
+{
+    const UList<vector2D>& x = cloud.x();
+    const UList<vector2D>& U = cloud.U();
+    const labelList& offsets = nbrs.offsets();
+    const labelList& nbr = nbrs.neighbours();
+
+    // Dn_i/Dt = sum_j dw/dr(r_ij) (r_ij . u_ij)/r_ij over every neighbour
+    // (dummies included, as in n_i)
+    scalar rate = 0;
+    for (label kk = offsets[i]; kk < offsets[i + 1]; ++kk)
+    {
+        const label j = nbr[kk];
+        const vector2D r(x[j] - x[i]);
+        const scalar d = max(mag(r), minR);
+        rate += kernel.dwdr(d)*((U[j] - U[i]) & r)/d;
+    }
+    return rate;
 }
 
 

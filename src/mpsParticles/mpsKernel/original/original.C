@@ -45,4 +45,11 @@ Foam::scalar Foam::mpsKernels::original::w(const scalar r) const
 }
 
 
+Foam::scalar Foam::mpsKernels::original::dwdr(const scalar r) const
+{
+    // w = re/r - 1: dw/dr = -re/r^2
+    return (r < re_ && r > 0) ? -re_/(r*r) : 0;
+}
+
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

@@ -50,4 +50,16 @@ Foam::scalar Foam::mpsKernels::polynomial::w(const scalar r) const
 }
 
 
+Foam::scalar Foam::mpsKernels::polynomial::dwdr(const scalar r) const
+{
+    // w = (1 - r/re)^3: dw/dr = -3 (1 - r/re)^2/re
+    if (r >= re_)
+    {
+        return 0;
+    }
+    const scalar s = 1 - r/re_;
+    return -3*s*s/re_;
+}
+
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
