@@ -89,15 +89,7 @@ void Foam::pressureGradients::corrected::gradient
         {
             continue;
         }
-        scalar pMin = p[i];
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-        {
-            const label j = nbr[k];
-            if (kind[j] != particleKind::dummy && w[k] > 0)
-            {
-                pMin = min(pMin, p[j]);
-            }
-        }
+        const scalar pMin = neighbourhoodMinimum(cloud, nbrs, w, p, i);
         const scalar pRef = particleReference_ ? p[i] : pMin;
 
         // The moment matrix sum w r r/r^2 and the sums of the two forms

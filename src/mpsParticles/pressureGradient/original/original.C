@@ -67,16 +67,7 @@ void Foam::pressureGradients::original::gradient
         {
             continue;
         }
-        // Minimum pressure over i and its pressure-carrying neighbours
-        scalar pMin = p[i];
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-        {
-            const label j = nbr[k];
-            if (kind[j] != particleKind::dummy && w[k] > 0)
-            {
-                pMin = min(pMin, p[j]);
-            }
-        }
+        const scalar pMin = neighbourhoodMinimum(cloud, nbrs, w, p, i);
         vector2D sum(Zero);
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {

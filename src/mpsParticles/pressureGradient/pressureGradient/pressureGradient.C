@@ -32,6 +32,31 @@ Foam::pressureGradient::pressureGradient(const dictionary& dict)
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
+Foam::scalar Foam::pressureGradient::neighbourhoodMinimum
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const UList<scalar>& w,
+    const UList<scalar>& p,
+    const label i
+)
+{
+    const UList<particleKind>& kind = cloud.kind();
+    const labelList& offsets = nbrs.offsets();
+    const labelList& nbr = nbrs.neighbours();
+    scalar pMin = p[i];
+    for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+    {
+        const label j = nbr[k];
+        if (kind[j] != particleKind::dummy && w[k] > 0)
+        {
+            pMin = min(pMin, p[j]);
+        }
+    }
+    return pMin;
+}
+
+
 Foam::scalar Foam::pressureGradient::extrapolate
 (
     const mpsCloud& cloud,
