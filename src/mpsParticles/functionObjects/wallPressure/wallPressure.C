@@ -145,6 +145,19 @@ void Foam::functionObjects::wallPressure::setProbes()
 }
 
 
+Foam::scalar Foam::functionObjects::wallPressure::pressure
+(
+    const label i
+) const
+{
+    const mpsState& state = mpsState::lookup(mesh_);
+    return
+        fluidPressure_
+      ? max(scalar(0), state.fluid().fluidPressureAt(i))
+      : state.cloud().p()[i];
+}
+
+
 void Foam::functionObjects::wallPressure::writeSnapshot() const
 {
     const mpsState& state = mpsState::lookup(mesh_);
@@ -167,6 +180,7 @@ void Foam::functionObjects::wallPressure::writeSnapshot() const
         writeHeaderValue(os, "rho [kg/m3]", state.fluid().rho());
         writeHeaderValue(os, "Uref [m/s]", Uref_);
         writeHeaderValue(os, "pRef [Pa]", pRef_);
+        writeHeaderValue(os, "pressure", word(fluidPressure_ ? "fluid" : "solved"));
         writeCommented(os, "x");
         writeTabbed(os, "y");
         writeTabbed(os, "p");
@@ -181,7 +195,7 @@ void Foam::functionObjects::wallPressure::writeSnapshot() const
         {
             if (cloud.region()[i] == r)
             {
-                const scalar p = cloud.p()[i];
+                const scalar p = pressure(i);
                 os  << cloud.x()[i].x() << tab << cloud.x()[i].y() << tab
                     << p << tab << (p - pRef_)/q << nl;
             }
@@ -204,6 +218,7 @@ Foam::functionObjects::wallPressure::wallPressure
     writeFile(mesh_, name),
     Uref_(0),
     pRef_(0),
+    fluidPressure_(false),
     filterWidth_(0)
 {
     read(dict);
@@ -239,7 +254,7 @@ bool Foam::functionObjects::wallPressure::read(const dictionary& dict)
         dict,
         inputChecks::functionObjectKeywords
         (
-            {"wall", "Uref", "pRef", "probes", "filterWidth"}
+            {"wall", "Uref", "pRef", "pressure", "probes", "filterWidth"}
         ),
         "function object " + name()
     );
@@ -253,6 +268,14 @@ bool Foam::functionObjects::wallPressure::read(const dictionary& dict)
             << Uref_ << exit(FatalIOError);
     }
     pRef_ = dict.getOrDefault<scalar>("pRef", 0);
+    const word pressure(dict.getOrDefault<word>("pressure", "solved"));
+    if (pressure != "solved" && pressure != "fluid")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'pressure': " << pressure << " is not valid" << nl
+            << "Valid pressures: (solved fluid)" << exit(FatalIOError);
+    }
+    fluidPressure_ = (pressure == "fluid");
 
     const dictionary* probes = inputChecks::optionalDict(dict, "probes");
     probesDict_ = probes ? *probes : dictionary();
@@ -306,8 +329,8 @@ bool Foam::functionObjects::wallPressure::execute()
     const scalar t = time_.value();
     forAll(probeNames_, pi)
     {
-        const scalar pa = cloud.p()[cloud.index(idA_[pi])];
-        const scalar pb = cloud.p()[cloud.index(idB_[pi])];
+        const scalar pa = pressure(cloud.index(idA_[pi]));
+        const scalar pb = pressure(cloud.index(idB_[pi]));
         const scalar p = (1 - weightB_[pi])*pa + weightB_[pi]*pb;
 
         // Running mean over (t - W, t]: the newest sample in, those that
