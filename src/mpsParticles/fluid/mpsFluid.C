@@ -657,7 +657,18 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
 
     correct(dt);
     info_.finite = allFinite() && std::isfinite(info_.ppeResidual);
-    info_.nRemoved += removeOutside();
+    const label nLeft = removeOutside();
+    info_.nRemoved += nLeft;
+    if (nLeft)
+    {
+        // The pairs and gradients that fluidPressureAt reads belong to
+        // the particles before the removal: rebuilt for those that remain
+        updateNeighbours();
+        gradient_->gradient
+        (
+            cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_
+        );
+    }
     lap(info_.timeRest);
 
     return info_;
@@ -666,7 +677,7 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
 
 Foam::scalar Foam::mpsFluid::fluidPressureAt(const label i) const
 {
-    if (gradP_.size() != cloud_.size() || nbrs_.offsets().size() != cloud_.size() + 1)
+    if (gradP_.size() != cloud_.size())
     {
         return 0;   // before the first step
     }

@@ -147,10 +147,10 @@ void Foam::functionObjects::wallPressure::setProbes()
 
 Foam::scalar Foam::functionObjects::wallPressure::pressure
 (
+    const mpsState& state,
     const label i
 ) const
 {
-    const mpsState& state = mpsState::lookup(mesh_);
     return
         fluidPressure_
       ? max(scalar(0), state.fluid().fluidPressureAt(i))
@@ -195,7 +195,7 @@ void Foam::functionObjects::wallPressure::writeSnapshot() const
         {
             if (cloud.region()[i] == r)
             {
-                const scalar p = pressure(i);
+                const scalar p = pressure(state, i);
                 os  << cloud.x()[i].x() << tab << cloud.x()[i].y() << tab
                     << p << tab << (p - pRef_)/q << nl;
             }
@@ -268,14 +268,14 @@ bool Foam::functionObjects::wallPressure::read(const dictionary& dict)
             << Uref_ << exit(FatalIOError);
     }
     pRef_ = dict.getOrDefault<scalar>("pRef", 0);
-    const word pressure(dict.getOrDefault<word>("pressure", "solved"));
-    if (pressure != "solved" && pressure != "fluid")
+    const word which(dict.getOrDefault<word>("pressure", "solved"));
+    if (which != "solved" && which != "fluid")
     {
         FatalIOErrorInFunction(dict)
-            << "Entry 'pressure': " << pressure << " is not valid" << nl
+            << "Entry 'pressure': " << which << " is not valid" << nl
             << "Valid pressures: (solved fluid)" << exit(FatalIOError);
     }
-    fluidPressure_ = (pressure == "fluid");
+    fluidPressure_ = (which == "fluid");
 
     const dictionary* probes = inputChecks::optionalDict(dict, "probes");
     probesDict_ = probes ? *probes : dictionary();
@@ -325,12 +325,13 @@ bool Foam::functionObjects::wallPressure::execute()
     {
         return true;
     }
-    const mpsCloud& cloud = mpsState::lookup(mesh_).cloud();
+    const mpsState& state = mpsState::lookup(mesh_);
+    const mpsCloud& cloud = state.cloud();
     const scalar t = time_.value();
     forAll(probeNames_, pi)
     {
-        const scalar pa = pressure(cloud.index(idA_[pi]));
-        const scalar pb = pressure(cloud.index(idB_[pi]));
+        const scalar pa = pressure(state, cloud.index(idA_[pi]));
+        const scalar pb = pressure(state, cloud.index(idB_[pi]));
         const scalar p = (1 - weightB_[pi])*pa + weightB_[pi]*pb;
 
         // Running mean over (t - W, t]: the newest sample in, those that

@@ -77,7 +77,6 @@ void Foam::pressureGradients::corrected::gradient
     const labelList& offsets = nbrs.offsets();
     const labelList& nbr = nbrs.neighbours();
     const label n = cloud.size();
-    const scalar coeff = 2/n0;
 
     grad.setSize(n);
 
@@ -89,13 +88,14 @@ void Foam::pressureGradients::corrected::gradient
         {
             continue;
         }
-        const scalar pMin = neighbourhoodMinimum(cloud, nbrs, w, p, i);
-        const scalar pRef = particleReference_ ? p[i] : pMin;
+        const scalar pRef =
+            particleReference_
+          ? p[i]
+          : neighbourhoodMinimum(cloud, nbrs, w, p, i);
 
-        // The moment matrix sum w r r/r^2 and the sums of the two forms
+        // The moment matrix sum w r r/r^2 and the corrected form's sum
         scalar mxx = 0, mxy = 0, myy = 0;
         vector2D sum(Zero);
-        vector2D sumMin(Zero);
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
             const label j = nbr[k];
@@ -109,7 +109,6 @@ void Foam::pressureGradients::corrected::gradient
             mxy += a*r.x()*r.y();
             myy += a*r.y()*r.y();
             sum += ((p[j] - pRef)*a)*r;
-            sumMin += ((p[j] - pMin)*a)*r;
         }
         const scalar det = mxx*myy - mxy*mxy;
         const scalar half = 0.5*(mxx + myy);
@@ -124,7 +123,7 @@ void Foam::pressureGradients::corrected::gradient
         }
         else
         {
-            grad[i] = coeff*sumMin;
+            grad[i] = minimumGradient(cloud, nbrs, w, n0, minR2, p, i);
         }
     }
 }

@@ -50,36 +50,18 @@ void Foam::pressureGradients::original::gradient
     List<vector2D>& grad
 ) const
 {
-    const UList<vector2D>& x = cloud.x();
     const UList<particleKind>& kind = cloud.kind();
-    const labelList& offsets = nbrs.offsets();
-    const labelList& nbr = nbrs.neighbours();
     const label n = cloud.size();
-    const scalar coeff = 2/n0;
 
     grad.setSize(n);
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        grad[i] = Zero;
-        if (kind[i] != particleKind::fluid)
-        {
-            continue;
-        }
-        const scalar pMin = neighbourhoodMinimum(cloud, nbrs, w, p, i);
-        vector2D sum(Zero);
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-        {
-            const label j = nbr[k];
-            if (kind[j] == particleKind::dummy)
-            {
-                continue;
-            }
-            const vector2D r(x[j] - x[i]);
-            sum += ((p[j] - pMin)*w[k]/max(magSqr(r), minR2))*r;
-        }
-        grad[i] = coeff*sum;
+        grad[i] =
+            kind[i] == particleKind::fluid
+          ? minimumGradient(cloud, nbrs, w, n0, minR2, p, i)
+          : vector2D::zero;
     }
 }
 

@@ -57,6 +57,38 @@ Foam::scalar Foam::pressureGradient::neighbourhoodMinimum
 }
 
 
+Foam::vector2D Foam::pressureGradient::minimumGradient
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const UList<scalar>& w,
+    const scalar n0,
+    const scalar minR2,
+    const UList<scalar>& p,
+    const label i
+)
+{
+    const UList<vector2D>& x = cloud.x();
+    const UList<particleKind>& kind = cloud.kind();
+    const labelList& offsets = nbrs.offsets();
+    const labelList& nbr = nbrs.neighbours();
+    const scalar pMin = neighbourhoodMinimum(cloud, nbrs, w, p, i);
+
+    vector2D sum(Zero);
+    for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+    {
+        const label j = nbr[k];
+        if (kind[j] == particleKind::dummy)
+        {
+            continue;
+        }
+        const vector2D r(x[j] - x[i]);
+        sum += ((p[j] - pMin)*w[k]/max(magSqr(r), minR2))*r;
+    }
+    return (2/n0)*sum;
+}
+
+
 Foam::scalar Foam::pressureGradient::extrapolate
 (
     const mpsCloud& cloud,
