@@ -25,6 +25,13 @@ const Foam::Enum<Foam::mpsFluid::sourceType> Foam::mpsFluid::sourceTypeNames
     { sourceType::higherOrder, "higherOrder" },
 });
 
+const Foam::Enum<Foam::mpsFluid::surfaceConditionType>
+Foam::mpsFluid::surfaceConditionTypeNames
+({
+    { surfaceConditionType::flagged, "flagged" },
+    { surfaceConditionType::continuous, "continuous" },
+});
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -51,7 +58,10 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
         inputChecks::keywords
         (
             *ppe,
-            {"source", "relaxation", "compressibility", "clampNegative"},
+            {
+                "source", "surfaceCondition", "relaxation", "compressibility",
+                "clampNegative"
+            },
             "ppe"
         );
     }
@@ -166,10 +176,11 @@ Foam::label Foam::mpsFluid::setUnknowns()
     UList<scalar>& p = cloud_.p();
     const label nPart = cloud_.size();
 
-    // Unknowns: every fluid and wall particle; a surface particle's row is
-    // p_i = 0 (scaled like an interior row), so that the matrix keeps its
-    // size while particles reach or leave the surface (a multigrid
-    // hierarchy can then serve several steps)
+    // Unknowns: every fluid and wall particle; with the flagged condition
+    // a surface particle's row is p_i = 0 (scaled like an interior row), so
+    // that the matrix keeps its size while particles reach or leave the
+    // surface (a multigrid hierarchy can then serve several steps)
+    const bool flagged = surfaceCondition_ == surfaceConditionType::flagged;
     unknown_.setSize(nPart);
     label nUnknowns = 0;
     label nSolved = 0;
@@ -177,12 +188,13 @@ Foam::label Foam::mpsFluid::setUnknowns()
     {
         const bool inPPE =
             (kind[i] == particleKind::fluid || kind[i] == particleKind::wall);
+        const bool zero = flagged && surface[i];
         unknown_[i] = inPPE ? nUnknowns++ : -1;
-        if (!inPPE || surface[i])
+        if (!inPPE || zero)
         {
             p[i] = 0;
         }
-        nSolved += (inPPE && !surface[i]);
+        nSolved += (inPPE && !zero);
     }
     info_.nUnknowns = nSolved;
 
@@ -201,8 +213,13 @@ void Foam::mpsFluid::assemblePressure
     const UList<vector2D>& x = cloud_.x();
     const UList<vector2D>& U = cloud_.U();
     const UList<scalar>& n = cloud_.n();
-    const UList<bool>& surface = cloud_.surface();
+    // Rows of p = 0 for the particles the free-surface model flags, or
+    // (continuous) none: every particle is solved
+    const bool continuous =
+        surfaceCondition_ == surfaceConditionType::continuous;
+    const UList<bool>& flags = cloud_.surface();
     const UList<particleKind>& kind = cloud_.kind();
+    auto surface = [&](const label i) { return !continuous && flags[i]; };
     const UList<scalar>& p = cloud_.p();
     const labelList& offsets = nbrs_.offsets();
     const labelList& nbr = nbrs_.neighbours();
@@ -220,7 +237,7 @@ void Foam::mpsFluid::assemblePressure
     {
         return
             kind[j] != particleKind::dummy
-         && unknown_[j] >= 0 && !surface[j];
+         && unknown_[j] >= 0 && !surface(j);
     };
     ppeMatrix::StorageIndex* outer = A.outerIndexPtr();
     outer[0] = 0;
@@ -232,7 +249,7 @@ void Foam::mpsFluid::assemblePressure
             continue;
         }
         label nnz = 1;
-        if (!surface[i])
+        if (!surface(i))
         {
             for (label k = offsets[i]; k < offsets[i + 1]; ++k)
             {
@@ -257,7 +274,7 @@ void Foam::mpsFluid::assemblePressure
             continue;
         }
         const label start = outer[row];
-        if (surface[i])
+        if (surface(i))
         {
             cols[start] = row;
             vals[start] = surfaceDiag;
@@ -268,10 +285,12 @@ void Foam::mpsFluid::assemblePressure
 
         scalar diag = diagComp;
         scalar div = 0;
+        scalar nL = 0;
         label e = start;
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
             const label j = nbr[k];
+            nL += wL_[k];
             if (kind[j] == particleKind::dummy)
             {
                 continue;
@@ -289,6 +308,14 @@ void Foam::mpsFluid::assemblePressure
                 const vector2D r(x[j] - x[i]);
                 div += ((U[j] - U[i]) & r)*wN_[k]/max(magSqr(r), minR2_);
             }
+        }
+        if (continuous)
+        {
+            // The lattice sites missing around i are air at p = 0: the
+            // Laplacian's weight they would carry, n0 - sum_j w_ij (dummies
+            // count as present: they close the wall side), joins the
+            // diagonal, and varies continuously as neighbours come and go
+            diag += lapCoeff*max(n0L_ - nL, scalar(0));
         }
         cols[e] = row;
         vals[e] = diag;
@@ -311,7 +338,14 @@ void Foam::mpsFluid::assemblePressure
             vals[l + 1] = v;
         }
 
-        const scalar densitySource = rho_/sqr(dt)*(n0N_ - n[i])/n0N_;
+        // The density term corrects compression and rarefaction; with the
+        // continuous condition only compression (n* > n0), since a deficit
+        // of neighbours there is the surface's, not a rarefaction
+        scalar densitySource = rho_/sqr(dt)*(n0N_ - n[i])/n0N_;
+        if (continuous)
+        {
+            densitySource = min(densitySource, scalar(0));
+        }
         scalar rhs = densitySource;
         if (source_ == sourceType::mixed)
         {
@@ -384,14 +418,19 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
 
 
     // The solution to the particles (negative pressures clamped to zero
-    // where ppe.clampNegative says so); surface particles keep p = 0
+    // where ppe.clampNegative says so); flagged surface particles keep p = 0
     const UList<bool>& surface = cloud_.surface();
     UList<scalar>& p = cloud_.p();
     const label nPart = cloud_.size();
     for (label i = 0; i < nPart; ++i)
     {
         const label row = unknown_[i];
-        if (row >= 0 && !surface[i])
+        if
+        (
+            row >= 0
+         && (surfaceCondition_ == surfaceConditionType::continuous
+          || !surface[i])
+        )
         {
             p[i] = (clampNegative_ && sol[row] < 0) ? 0 : sol[row];
         }
@@ -490,6 +529,7 @@ Foam::mpsFluid::mpsFluid
     minR_(1e-3*l0_),
     minR2_(sqr(minR_)),
     source_(sourceType::mixed),
+    surfaceCondition_(surfaceConditionType::flagged),
     relaxation_(0.05),
     compressibility_(0),
     clampNegative_(true),
@@ -537,6 +577,10 @@ Foam::mpsFluid::mpsFluid
     {
         const dictionary& ppe = *ppePtr;
         source_ = sourceTypeNames.getOrDefault("source", ppe, source_);
+        surfaceCondition_ = surfaceConditionTypeNames.getOrDefault
+        (
+            "surfaceCondition", ppe, surfaceCondition_
+        );
         relaxation_ = ppe.getOrDefault<scalar>("relaxation", relaxation_);
         compressibility_ =
             ppe.getOrDefault<scalar>("compressibility", compressibility_);
