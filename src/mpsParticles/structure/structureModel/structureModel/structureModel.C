@@ -32,11 +32,18 @@ void Foam::structureModel::updateAcceleration()
     const scalar m = mass();
     const scalar I = rotationalInertia();
 
-    #pragma omp parallel for schedule(static)
+    // The support holds the clamped particles on their prescribed motion
+    // (no acceleration, no rotation): its reaction is minus the internal,
+    // external and gravity forces on them, its power that times their
+    // velocity
+    scalar power = 0;
+
+    #pragma omp parallel for schedule(static) reduction(+:power)
     for (label i = 0; i < size(); ++i)
     {
         if (clamped_[i])
         {
+            power -= (a_[i] + f_[i] + m*g_) & clampedVelocity_;
             a_[i] = Zero;
             alpha_[i] = 0;
         }
@@ -46,6 +53,7 @@ void Foam::structureModel::updateAcceleration()
             alpha_[i] /= I;
         }
     }
+    supportPower_ = power;
 }
 
 
@@ -182,6 +190,11 @@ Foam::structureModel::structureModel
     clamped_(clamped),
     clampedVelocity_(Zero),
     time_(0),
+    externalWork_(0),
+    supportWork_(0),
+    dampingLoss_(0),
+    supportPower_(0),
+    initialEnergy_(-1),
     dtMax_(0)
 {
     if (rho_ <= 0)
@@ -309,30 +322,48 @@ void Foam::structureModel::advance(const label nSteps)
     }
     const scalar dt = dt_;
     const scalar decay = ::exp(-damping_*dt);
+    const scalar m = mass();
+    const scalar I = rotationalInertia();
+    if (initialEnergy_ < 0)
+    {
+        initialEnergy_ = kineticEnergy() + strainEnergy();
+    }
 
     for (label step = 0; step < nSteps; ++step)
     {
-        #pragma omp parallel for schedule(static)
+        // Work of the external forces and gravity, constant over the
+        // step: (f + m g).dx, exact for the drift dx
+        scalar work = 0;
+
+        #pragma omp parallel for schedule(static) reduction(+:work)
         for (label i = 0; i < size(); ++i)
         {
+            vector2D dx;
             if (clamped_[i])
             {
                 v_[i] = clampedVelocity_;
-                x_[i] += dt*clampedVelocity_;
+                dx = dt*clampedVelocity_;
             }
             else
             {
                 v_[i] += 0.5*dt*a_[i];
-                x_[i] += dt*v_[i];
+                dx = dt*v_[i];
                 omega_[i] += 0.5*dt*alpha_[i];
                 theta_[i] += dt*omega_[i];
             }
+            x_[i] += dx;
+            work += (f_[i] + m*g_) & dx;
         }
         time_ += dt;
+        externalWork_ += work;
 
+        const scalar powerBefore = supportPower_;
         updateAcceleration();
+        supportWork_ += 0.5*dt*(powerBefore + supportPower_);
 
-        #pragma omp parallel for schedule(static)
+        scalar loss = 0;
+
+        #pragma omp parallel for schedule(static) reduction(+:loss)
         for (label i = 0; i < size(); ++i)
         {
             if (!clamped_[i])
@@ -341,11 +372,15 @@ void Foam::structureModel::advance(const label nSteps)
                 omega_[i] += 0.5*dt*alpha_[i];
                 if (damping_ > 0)
                 {
+                    const scalar e =
+                        0.5*m*magSqr(v_[i]) + 0.5*I*sqr(omega_[i]);
                     v_[i] *= decay;
                     omega_[i] *= decay;
+                    loss += e*(1 - sqr(decay));
                 }
             }
         }
+        dampingLoss_ += loss;
     }
 }
 
