@@ -151,6 +151,7 @@ void Foam::fluidStructureInterface::transferPressure()
 
     force_ = Zero;
     fluidForce_ = Zero;
+    wallForce_.setSize(walls_.size());
     forAll(walls_, m)
     {
         const label k = walls_[m];
@@ -164,6 +165,7 @@ void Foam::fluidStructureInterface::transferPressure()
           ? max(scalar(0), fluid->fluidPressureAt(i))
           : cloud_.p()[i];
         const vector2D F(-p*cloud_.spacing()[i]*n);
+        wallForce_[m] = F;
         fluidForce_ += F;
         for (label e = weightStart_[m]; e < weightStart_[m + 1]; ++e)
         {
@@ -208,6 +210,7 @@ Foam::fluidStructureInterface::fluidStructureInterface
     l0_(l0),
     fluidPressure_(false),
     fluidForce_(Zero),
+    wallWork_(0),
     maxImbalance_(0),
     time_(0)
 {
@@ -301,7 +304,18 @@ void Foam::fluidStructureInterface::evolve
     structure_.advance(t, deltaT, force_);
 
     clock.update();
+    const labelList attached(cloud_.indices(attachedId_, "attached wall"));
+    List<vector2D> before(walls_.size());
+    forAll(walls_, m)
+    {
+        before[m] = cloud_.x()[attached[walls_[m]]];
+    }
     moveWalls();
+    forAll(walls_, m)
+    {
+        wallWork_ +=
+            wallForce_[m] & (cloud_.x()[attached[walls_[m]]] - before[m]);
+    }
     time_ += clock.elapsed();
 }
 

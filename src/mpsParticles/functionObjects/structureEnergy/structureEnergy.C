@@ -15,6 +15,7 @@ License
 #include "inputChecks.H"
 #include "mpsStructure.H"
 #include "mpsState.H"
+#include "fluidStructureInterface.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -92,7 +93,7 @@ bool Foam::functionObjects::structureEnergy::write()
                 const word& c
               : {
                     "kinetic", "strain", "work", "fluidWork", "motionWork",
-                    "damping", "balance"
+                    "damping", "balance", "wallWork"
                 }
             )
             {
@@ -111,11 +112,20 @@ bool Foam::functionObjects::structureEnergy::write()
         const scalar balance =
             kinetic + strain - s.initialEnergy() - work + s.dampingLoss();
 
+        // The fluid's work along the walls' motion (0 without a coupling)
+        const fluidStructureInterface* fsi =
+            mesh_.findObject<fluidStructureInterface>
+            (
+                fluidStructureInterface::typeName
+            );
+        const scalar wallWork = fsi ? fsi->wallWork() : 0;
+
         OFstream& os = file();
         writeCurrentTime(os);
         os  << tab << kinetic << tab << strain << tab << work
             << tab << s.externalWork() << tab << s.supportWork()
-            << tab << s.dampingLoss() << tab << balance << endl;
+            << tab << s.dampingLoss() << tab << balance
+            << tab << wallWork << endl;
     }
     return true;
 }
