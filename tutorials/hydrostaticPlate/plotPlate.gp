@@ -1,9 +1,10 @@
 # Hydrostatic plate: mid-span deflection against beam theory, and the
-# fluid's load on the plate against the water's weight (-e "weight = ...")
+# fluid's load on the plate against the water's weight (Allrun gives
+# -e "weight = ...; wEB = ...; wT = ..." from the case's dictionaries)
 set terminal pngcairo size 1300,550 font ",11"
 set output "deflection.png"
-wEB = 6.8604e-5     # Euler-Bernoulli, clamped-clamped, q L^4/(384 E' I)
-wT = 7.1099e-5      # with Timoshenko's shear deflection q L^2/(8 k G h)
+# wEB: Euler-Bernoulli, clamped-clamped, q L^4/(384 E' I);
+# wT: with Timoshenko's shear deflection q L^2/(8 k G h), k = 5/6
 set multiplot layout 1,2
 set title "Mid-span deflection"
 set xlabel "t [s]"

@@ -171,7 +171,6 @@ void Foam::mpsFluid::predict(const scalar dt)
 
 Foam::label Foam::mpsFluid::setUnknowns()
 {
-    const UList<bool>& surface = cloud_.surface();
     const UList<particleKind>& kind = cloud_.kind();
     UList<scalar>& p = cloud_.p();
     const label nPart = cloud_.size();
@@ -180,7 +179,6 @@ Foam::label Foam::mpsFluid::setUnknowns()
     // a surface particle's row is p_i = 0 (scaled like an interior row), so
     // that the matrix keeps its size while particles reach or leave the
     // surface (a multigrid hierarchy can then serve several steps)
-    const bool flagged = surfaceCondition_ == surfaceConditionType::flagged;
     unknown_.setSize(nPart);
     label nUnknowns = 0;
     label nSolved = 0;
@@ -188,7 +186,7 @@ Foam::label Foam::mpsFluid::setUnknowns()
     {
         const bool inPPE =
             (kind[i] == particleKind::fluid || kind[i] == particleKind::wall);
-        const bool zero = flagged && surface[i];
+        const bool zero = zeroRow(i);
         unknown_[i] = inPPE ? nUnknowns++ : -1;
         if (!inPPE || zero)
         {
@@ -213,13 +211,9 @@ void Foam::mpsFluid::assemblePressure
     const UList<vector2D>& x = cloud_.x();
     const UList<vector2D>& U = cloud_.U();
     const UList<scalar>& n = cloud_.n();
-    // Rows of p = 0 for the particles the free-surface model flags, or
-    // (continuous) none: every particle is solved
     const bool continuous =
         surfaceCondition_ == surfaceConditionType::continuous;
-    const UList<bool>& flags = cloud_.surface();
     const UList<particleKind>& kind = cloud_.kind();
-    auto surface = [&](const label i) { return !continuous && flags[i]; };
     const UList<scalar>& p = cloud_.p();
     const labelList& offsets = nbrs_.offsets();
     const labelList& nbr = nbrs_.neighbours();
@@ -237,7 +231,7 @@ void Foam::mpsFluid::assemblePressure
     {
         return
             kind[j] != particleKind::dummy
-         && unknown_[j] >= 0 && !surface(j);
+         && unknown_[j] >= 0 && !zeroRow(j);
     };
     ppeMatrix::StorageIndex* outer = A.outerIndexPtr();
     outer[0] = 0;
@@ -249,7 +243,7 @@ void Foam::mpsFluid::assemblePressure
             continue;
         }
         label nnz = 1;
-        if (!surface(i))
+        if (!zeroRow(i))
         {
             for (label k = offsets[i]; k < offsets[i + 1]; ++k)
             {
@@ -274,7 +268,7 @@ void Foam::mpsFluid::assemblePressure
             continue;
         }
         const label start = outer[row];
-        if (surface(i))
+        if (zeroRow(i))
         {
             cols[start] = row;
             vals[start] = surfaceDiag;
@@ -419,18 +413,12 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
 
     // The solution to the particles (negative pressures clamped to zero
     // where ppe.clampNegative says so); flagged surface particles keep p = 0
-    const UList<bool>& surface = cloud_.surface();
     UList<scalar>& p = cloud_.p();
     const label nPart = cloud_.size();
     for (label i = 0; i < nPart; ++i)
     {
         const label row = unknown_[i];
-        if
-        (
-            row >= 0
-         && (surfaceCondition_ == surfaceConditionType::continuous
-          || !surface[i])
-        )
+        if (row >= 0 && !zeroRow(i))
         {
             p[i] = (clampNegative_ && sol[row] < 0) ? 0 : sol[row];
         }

@@ -151,7 +151,8 @@ void Foam::fluidStructureInterface::transferPressure()
 
     force_ = Zero;
     fluidForce_ = Zero;
-    wallForce_.setSize(walls_.size());
+    wallForce_.setSize(attached.size());
+    wallForce_ = Zero;
     forAll(walls_, m)
     {
         const label k = walls_[m];
@@ -165,7 +166,7 @@ void Foam::fluidStructureInterface::transferPressure()
           ? max(scalar(0), fluid->fluidPressureAt(i))
           : cloud_.p()[i];
         const vector2D F(-p*cloud_.spacing()[i]*n);
-        wallForce_[m] = F;
+        wallForce_[k] = F;
         fluidForce_ += F;
         for (label e = weightStart_[m]; e < weightStart_[m + 1]; ++e)
         {
@@ -304,18 +305,7 @@ void Foam::fluidStructureInterface::evolve
     structure_.advance(t, deltaT, force_);
 
     clock.update();
-    const labelList attached(cloud_.indices(attachedId_, "attached wall"));
-    List<vector2D> before(walls_.size());
-    forAll(walls_, m)
-    {
-        before[m] = cloud_.x()[attached[walls_[m]]];
-    }
     moveWalls();
-    forAll(walls_, m)
-    {
-        wallWork_ +=
-            wallForce_[m] & (cloud_.x()[attached[walls_[m]]] - before[m]);
-    }
     time_ += clock.elapsed();
 }
 
@@ -334,7 +324,14 @@ void Foam::fluidStructureInterface::moveWalls()
         const label i = attached[k];
         const label s = anchor_[k];
         const vector2D d(structureModel::rotate(model.theta()[s], offset_[k]));
-        cloud_.x()[i] = model.x()[s] + d;
+        const vector2D x(model.x()[s] + d);
+        if (wallForce_.size() == attached.size())
+        {
+            // The fluid's force on it along its motion (interface walls;
+            // the others carry none)
+            wallWork_ += wallForce_[k] & (x - cloud_.x()[i]);
+        }
+        cloud_.x()[i] = x;
         cloud_.U()[i] = model.v()[s] + model.omega()[s]*vector2D(-d.y(), d.x());
     }
 }

@@ -324,10 +324,7 @@ void Foam::structureModel::advance(const label nSteps)
     const scalar decay = ::exp(-damping_*dt);
     const scalar m = mass();
     const scalar I = rotationalInertia();
-    if (initialEnergy_ < 0)
-    {
-        initialEnergy_ = kineticEnergy() + strainEnergy();
-    }
+    startEnergyBalance();
 
     for (label step = 0; step < nSteps; ++step)
     {
