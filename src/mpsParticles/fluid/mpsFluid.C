@@ -30,6 +30,14 @@ Foam::mpsFluid::surfaceConditionTypeNames
 ({
     { surfaceConditionType::flagged, "flagged" },
     { surfaceConditionType::continuous, "continuous" },
+    { surfaceConditionType::extrapolated, "extrapolated" },
+});
+
+const Foam::Enum<Foam::mpsFluid::compressibilityFormType>
+Foam::mpsFluid::compressibilityFormTypeNames
+({
+    { compressibilityFormType::absolute, "absolute" },
+    { compressibilityFormType::rate, "rate" },
 });
 
 
@@ -60,7 +68,7 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
             *ppe,
             {
                 "source", "surfaceCondition", "relaxation", "compressibility",
-                "clampNegative"
+                "compressibilityForm", "clampNegative"
             },
             "ppe"
         );
@@ -212,7 +220,12 @@ void Foam::mpsFluid::assemblePressure
     const UList<vector2D>& U = cloud_.U();
     const UList<scalar>& n = cloud_.n();
     const bool continuous =
-        surfaceCondition_ == surfaceConditionType::continuous;
+        surfaceCondition_ != surfaceConditionType::flagged;
+    // The pressure the missing lattice sites carry, relative to p_i: 0
+    // (continuous) or the mirror image -p_i (extrapolated), so that the
+    // missing weight counts once or twice on the diagonal
+    const scalar airFactor =
+        surfaceCondition_ == surfaceConditionType::extrapolated ? 2 : 1;
     const UList<particleKind>& kind = cloud_.kind();
     const UList<scalar>& p = cloud_.p();
     const labelList& offsets = nbrs_.offsets();
@@ -223,7 +236,20 @@ void Foam::mpsFluid::assemblePressure
     // Rows: -<lap p>_i + (alpha rho/dt^2) p_i = -RHS_i (positive definite)
     const scalar lapCoeff = 2*2/(lambdaL_*n0L_);
     const scalar divCoeff = 2/n0N_;
-    const scalar diagComp = compressibility_*rho_/sqr(dt);
+    const scalar kappa = compressibility_*rho_/sqr(dt);
+
+    // Weak compressibility: the particles' density follows the pressure,
+    // n = n0 (1 + alpha p). absolute (Ikeda et al.): the source's density
+    // is measured from n0 with the new pressure, kappa p on the diagonal.
+    // rate: the divergence term is the rate of the density, kappa (p - p_old)
+    // (a fluid of sound speed 1/sqrt(alpha rho)), the relaxation's density
+    // error is measured from n0 (1 + alpha p): gamma kappa p; the numberDensity
+    // source has no rate term, so it stays absolute
+    const bool rate =
+        compressibilityForm_ == compressibilityFormType::rate
+     && source_ != sourceType::numberDensity;
+    const scalar diagComp = rate ? (1 + relaxation_)*kappa : kappa;
+    const scalar oldComp = rate ? kappa : 0;
 
     // The matrix is written straight into compressed rows, in parallel:
     // row sizes first, then each row filled (sorted by column) on its own
@@ -309,7 +335,7 @@ void Foam::mpsFluid::assemblePressure
             // Laplacian's weight they would carry, n0 - sum_j w_ij (dummies
             // count as present: they close the wall side), joins the
             // diagonal, and varies continuously as neighbours come and go
-            diag += lapCoeff*max(n0L_ - nL, scalar(0));
+            diag += airFactor*lapCoeff*max(n0L_ - nL, scalar(0));
         }
         cols[e] = row;
         vals[e] = diag;
@@ -353,6 +379,7 @@ void Foam::mpsFluid::assemblePressure
               + relaxation_*densitySource;
         }
         b[row] = -rhs;
+        b[row] += oldComp*p[i];
         sol[row] = p[i];
     }
 
@@ -387,14 +414,29 @@ Foam::scalar Foam::mpsFluid::numberDensityRate
 }
 
 
-void Foam::mpsFluid::solvePressure(const scalar dt)
+const Foam::labelList& Foam::mpsFluid::pressureSystem
+(
+    const scalar dt,
+    ppeMatrix& A,
+    Eigen::VectorXd& b,
+    Eigen::VectorXd& sol
+)
 {
     const label nUnknowns = setUnknowns();
-
-    Eigen::VectorXd b(nUnknowns);
-    Eigen::VectorXd sol(nUnknowns);
-    ppeMatrix A(nUnknowns, nUnknowns);
+    A.resize(nUnknowns, nUnknowns);
+    b.resize(nUnknowns);
+    sol.resize(nUnknowns);
     assemblePressure(dt, A, b, sol);
+    return unknown_;
+}
+
+
+void Foam::mpsFluid::solvePressure(const scalar dt)
+{
+    Eigen::VectorXd b;
+    Eigen::VectorXd sol;
+    ppeMatrix A;
+    pressureSystem(dt, A, b, sol);
 
     // The relative residual |b - A p|/|b| of the last step's pressure (the
     // log's initial residual; the solvers' final one is the same measure)
@@ -520,6 +562,7 @@ Foam::mpsFluid::mpsFluid
     surfaceCondition_(surfaceConditionType::flagged),
     relaxation_(0.05),
     compressibility_(0),
+    compressibilityForm_(compressibilityFormType::absolute),
     clampNegative_(true),
     domain_(domain),
     lastSolveTime_(0)
@@ -572,6 +615,10 @@ Foam::mpsFluid::mpsFluid
         relaxation_ = ppe.getOrDefault<scalar>("relaxation", relaxation_);
         compressibility_ =
             ppe.getOrDefault<scalar>("compressibility", compressibility_);
+        compressibilityForm_ = compressibilityFormTypeNames.getOrDefault
+        (
+            "compressibilityForm", ppe, compressibilityForm_
+        );
         clampNegative_ = ppe.getOrDefault<bool>("clampNegative", true);
         if (relaxation_ < 0 || relaxation_ > 1 || compressibility_ < 0)
         {
