@@ -68,7 +68,7 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
             *ppe,
             {
                 "source", "surfaceCondition", "relaxation", "compressibility",
-                "compressibilityForm", "clampNegative"
+                "compressibilityForm", "fillVoids", "clampNegative"
             },
             "ppe"
         );
@@ -366,17 +366,31 @@ void Foam::mpsFluid::assemblePressure
         {
             densitySource = min(densitySource, scalar(0));
         }
+        // With fillVoids, neighbours that approach a particle short of
+        // neighbours (n < n0) fill its void before they compress the water:
+        // the compression rate the source corrects is what exceeds the
+        // rate that fills the deficit (n0 - n)/n0 within the step
+        const scalar deficit =
+            fillVoids_ ? max(n0N_ - n[i], scalar(0))/n0N_ : 0;
         scalar rhs = densitySource;
         if (source_ == sourceType::mixed)
         {
-            rhs = rho_/dt*divCoeff*div + relaxation_*densitySource;
+            scalar divergence = divCoeff*div;
+            if (divergence < 0)
+            {
+                divergence = min(divergence + deficit/dt, scalar(0));
+            }
+            rhs = rho_/dt*divergence + relaxation_*densitySource;
         }
         else if (source_ == sourceType::higherOrder)
         {
-            rhs =
-               -rho_/(n0N_*dt)
-               *numberDensityRate(cloud_, nbrs_, kN_(), i, minR_)
-              + relaxation_*densitySource;
+            scalar rate =
+                numberDensityRate(cloud_, nbrs_, kN_(), i, minR_)/n0N_;
+            if (rate > 0)
+            {
+                rate = max(rate - deficit/dt, scalar(0));
+            }
+            rhs = -rho_/dt*rate + relaxation_*densitySource;
         }
         b[row] = -rhs;
         b[row] += oldComp*p[i];
@@ -563,6 +577,7 @@ Foam::mpsFluid::mpsFluid
     relaxation_(0.05),
     compressibility_(0),
     compressibilityForm_(compressibilityFormType::absolute),
+    fillVoids_(false),
     clampNegative_(true),
     domain_(domain),
     lastSolveTime_(0)
@@ -620,6 +635,14 @@ Foam::mpsFluid::mpsFluid
             "compressibilityForm", ppe, compressibilityForm_
         );
         clampNegative_ = ppe.getOrDefault<bool>("clampNegative", true);
+        fillVoids_ = ppe.getOrDefault<bool>("fillVoids", false);
+        if (fillVoids_ && surfaceCondition_ == surfaceConditionType::flagged)
+        {
+            FatalIOErrorInFunction(ppe)
+                << "Entry 'fillVoids' needs surfaceCondition continuous or"
+                << " extrapolated (flagged sets the particles short of"
+                << " neighbours to p = 0)" << exit(FatalIOError);
+        }
         if (relaxation_ < 0 || relaxation_ > 1 || compressibility_ < 0)
         {
             FatalIOErrorInFunction(ppe)
