@@ -296,6 +296,21 @@ TEST_CASE("pressure gradient entries are checked")
 namespace
 {
 
+// constant/mpsProperties of the PPE tests: water, l0 = 0.01 m, kernel
+// original, radii 2.1 l0, mixed source and the given ppe entries
+dictionary ppeFluidDict(const std::string& ppe)
+{
+    return test::dict
+    (
+        "rho 1000; nu 1e-6; g (0 -9.81 0); l0 0.01;"
+        " kernel { type original; }"
+        " re { numberDensity 2.1; gradient 2.1; laplacian 2.1; viscosity 2.1; }"
+        " ppe { source mixed; " + ppe + " }"
+        " freeSurface { type improved; } collision { type none; }"
+        " pressureSolver { type PCG; }"
+    );
+}
+
 // A lattice block of nx x ny fluid particles at spacing 0.01 m, at rest,
 // and an mpsFluid on it with the given ppe entries (kernel original, radii
 // 2.1 l0, mixed source); evaluate() has set its number density
@@ -319,17 +334,7 @@ struct ppeBlock
         (
             new mpsFluid
             (
-                cloud,
-                test::dict
-                (
-                    "rho 1000; nu 1e-6; g (0 -9.81 0); l0 0.01;"
-                    " kernel { type original; }"
-                    " re { numberDensity 2.1; gradient 2.1; laplacian 2.1; viscosity 2.1; }"
-                    " ppe { source mixed; " + ppe + " }"
-                    " freeSurface { type improved; } collision { type none; }"
-                    " pressureSolver { type PCG; }"
-                ),
-                boundBox(point(-1, -1, -1), point(1, 1, 1))
+                cloud, ppeFluidDict(ppe), boundBox(point(-1, -1, -1), point(1, 1, 1))
             )
         );
         fluid->evaluate();
@@ -470,18 +475,6 @@ TEST_CASE("fillVoids: an approach into a void fills it; full neighbourhoods keep
     //    their source (to the round-off of n - n0 over dt: 1e-7); the
     //    surface rows' sources are smaller.
     const scalar l0 = 0.01, dt = 2e-5;
-    auto fluidDict = [](const std::string& ppe)
-    {
-        return test::dict
-        (
-            "rho 1000; nu 1e-6; g (0 -9.81 0); l0 0.01;"
-            " kernel { type original; }"
-            " re { numberDensity 2.1; gradient 2.1; laplacian 2.1; viscosity 2.1; }"
-            " ppe { source mixed; surfaceCondition extrapolated; " + ppe + " }"
-            " freeSurface { type improved; } collision { type none; }"
-            " pressureSolver { type PCG; }"
-        );
-    };
     const boundBox domain(point(-1, -1, -1), point(1, 1, 1));
 
     scalar wallSource[2];
@@ -502,7 +495,16 @@ TEST_CASE("fillVoids: an approach into a void fills it; full neighbourhoods keep
                 c.append(l0*vector2D(i, j), particleKind::dummy, r, l0);
             }
         }
-        mpsFluid fluid(c, fluidDict(fill ? "fillVoids yes;" : ""), domain);
+        mpsFluid fluid
+        (
+            c,
+            ppeFluidDict
+            (
+                std::string("surfaceCondition extrapolated; ")
+              + (fill ? "fillVoids yes;" : "")
+            ),
+            domain
+        );
         fluid.evaluate();
         ppeMatrix A;
         Eigen::VectorXd b, sol;

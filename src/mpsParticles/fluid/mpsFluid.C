@@ -219,7 +219,9 @@ void Foam::mpsFluid::assemblePressure
     const UList<vector2D>& x = cloud_.x();
     const UList<vector2D>& U = cloud_.U();
     const UList<scalar>& n = cloud_.n();
-    const bool continuous =
+    // continuous and extrapolated: no row is set to zero, the missing
+    // lattice sites are air
+    const bool airSites =
         surfaceCondition_ != surfaceConditionType::flagged;
     // The pressure the missing lattice sites carry, relative to p_i: 0
     // (continuous) or the mirror image -p_i (extrapolated), so that the
@@ -329,7 +331,7 @@ void Foam::mpsFluid::assemblePressure
                 div += ((U[j] - U[i]) & r)*wN_[k]/max(magSqr(r), minR2_);
             }
         }
-        if (continuous)
+        if (airSites)
         {
             // The lattice sites missing around i are air at p = 0: the
             // Laplacian's weight they would carry, n0 - sum_j w_ij (dummies
@@ -359,10 +361,11 @@ void Foam::mpsFluid::assemblePressure
         }
 
         // The density term corrects compression and rarefaction; with the
-        // continuous condition only compression (n* > n0), since a deficit
-        // of neighbours there is the surface's, not a rarefaction
+        // continuous and extrapolated conditions only compression (n* > n0),
+        // since a deficit of neighbours there is the surface's, not a
+        // rarefaction
         scalar densitySource = rho_/sqr(dt)*(n0N_ - n[i])/n0N_;
-        if (continuous)
+        if (airSites)
         {
             densitySource = min(densitySource, scalar(0));
         }
@@ -384,13 +387,13 @@ void Foam::mpsFluid::assemblePressure
         }
         else if (source_ == sourceType::higherOrder)
         {
-            scalar rate =
+            scalar nRate =
                 numberDensityRate(cloud_, nbrs_, kN_(), i, minR_)/n0N_;
-            if (rate > 0)
+            if (nRate > 0)
             {
-                rate = max(rate - deficit/dt, scalar(0));
+                nRate = max(nRate - deficit/dt, scalar(0));
             }
-            rhs = -rho_/dt*rate + relaxation_*densitySource;
+            rhs = -rho_/dt*nRate + relaxation_*densitySource;
         }
         b[row] = -rhs;
         b[row] += oldComp*p[i];
