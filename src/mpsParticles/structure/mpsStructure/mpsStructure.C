@@ -220,8 +220,8 @@ Foam::scalar Foam::mpsStructure::spacing
         {
             "structureModel", "rho", "E", "nu", "planeStrain", "spacing",
             "spacingRatio", "nSubSteps", "deltaT", "damping", "g",
-            "clamped", "clampedVelocity", "bodyMotion", "initialVelocity",
-            "loads", "coupling"
+            "clamped", "clampAt", "clampedVelocity", "bodyMotion",
+            "initialVelocity", "loads", "coupling"
         },
         "constant/structureProperties"
     );
@@ -230,7 +230,7 @@ Foam::scalar Foam::mpsStructure::spacing
         dict,
         {
             "rho", "E", "nu", "planeStrain", "spacing", "spacingRatio",
-            "nSubSteps", "deltaT", "damping", "g", "clamped",
+            "nSubSteps", "deltaT", "damping", "g", "clamped", "clampAt",
             "clampedVelocity"
         }
     );

@@ -99,6 +99,14 @@ Foam::structureModels::rigid::rigid
     J_(0),
     prescribed_(false)
 {
+    if (clampAtFace_)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "clampAt face is not available with rigid (a rigid"
+            << " body has no strain to clamp); use clampAt"
+            << " particles" << exit(FatalIOError);
+    }
+
     forAll(X_, i)
     {
         Xc_ += X_[i];

@@ -106,6 +106,22 @@ void Foam::structureModels::rotatingParticles::internalForces
             k += c_[e]*(theta_[j] - theta_[i]);
         }
         Gamma_[i] = G;
+
+        // Rotation's lattice Laplacian (the odd-even stabilisation)
+        scalar lap = 0;
+        for (label e = offsets_[i]; e < offsets_[i + 1]; ++e)
+        {
+            lap += theta_[nbr_[e]] - theta_[i];
+        }
+        lapTheta_[i] = ownsEnergy(i) ? lap/sqr(ds_) : 0;
+
+        if (!ownsEnergy(i))
+        {
+            // a face clamp's clamped particle: no energy of its own
+            kappa_[i] = Zero;
+            S_[i] = tensor2D::zero;
+            continue;
+        }
         kappa_[i] = k;
 
         const symmTensor2D sigma(stress(i, symm(G)));
@@ -120,6 +136,7 @@ void Foam::structureModels::rotatingParticles::internalForces
 
     // Forces and torques, gathered per particle
     const scalar VD = V*D_;
+    const scalar VH = V*hourglass_;
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < size(); ++i)
@@ -136,6 +153,7 @@ void Foam::structureModels::rotatingParticles::internalForces
             F += vector2D(c*s.x() - sn*s.y(), sn*s.x() + c*s.y());
             dUdTheta -= 0.5*cross(q_[e], s);
             dUdTheta += VD*((kappa_[j] & c_[er]) - (kappa_[i] & c_[e]));
+            dUdTheta += VH*(lapTheta_[j] - lapTheta_[i])/sqr(ds_);
         }
         force[i] = F;
         torque[i] = -dUdTheta;
@@ -155,10 +173,12 @@ Foam::structureModels::rotatingParticles::rotatingParticles
 :
     structureModel(dict, X, clamped, spacing),
     D_(bendingModulus()*sqr(spacing)/12),
+    hourglass_(0.25*D_*sqr(spacing)),
     normal_(X.size(), Zero),
     Gamma_(X.size(), tensor2D::zero),
     kappa_(X.size(), Zero),
-    S_(X.size(), tensor2D::zero)
+    S_(X.size(), tensor2D::zero),
+    lapTheta_(X.size(), Zero)
 {
     const label n = size();
     const neighbourList candidates(X_, 2.1*ds_);
@@ -245,6 +265,26 @@ Foam::structureModels::rotatingParticles::rotatingParticles
         {
             // Both faces free: the surface stress with n normal to the row
             normal_[i] = vector2D(-rowTangent[i].y(), rowTangent[i].x());
+        }
+    }
+
+    // A face clamp acts through the first clamped layer only
+    forAll(stencil, i)
+    {
+        if (clamped_[i])
+        {
+            continue;
+        }
+        for (const label j : stencil[i])
+        {
+            if (clamped_[j] && clampAtFace_ && !isGhost(j))
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "clampAt face: the stencil of the particle at "
+                    << X_[i] << " reaches the clamped particle at " << X_[j]
+                    << ", beyond the first clamped layer (use clampAt"
+                    << " particles)" << exit(FatalIOError);
+            }
         }
     }
 
@@ -342,10 +382,17 @@ Foam::scalar Foam::structureModels::rotatingParticles::strainEnergy() const
     scalar e = 0;
     forAll(Gamma_, i)
     {
+        if (!ownsEnergy(i))
+        {
+            continue;
+        }
         const symmTensor2D eps(symm(Gamma_[i]));
         const scalar w = Gamma_[i].xy() - Gamma_[i].yx();
         e += 0.5*V
-           *((stress(i, eps) && eps) + mu_*sqr(w) + D_*magSqr(kappa_[i]));
+           *(
+                (stress(i, eps) && eps) + mu_*sqr(w) + D_*magSqr(kappa_[i])
+              + hourglass_*sqr(lapTheta_[i])
+            );
     }
     return e;
 }

@@ -12,6 +12,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "structureModel.H"
+#include "neighbourList.H"
+#include "UIndirectList.H"
 #include "Random.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -25,9 +27,128 @@ namespace Foam
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
+void Foam::structureModel::findGhosts()
+{
+    if (!clampAtFace_)
+    {
+        return;
+    }
+    const neighbourList nbrs(X_, 1.1*ds_);
+    DynamicList<label> ghost, near, far;
+    forAll(X_, g)
+    {
+        if (!clamped_[g])
+        {
+            continue;
+        }
+        DynamicList<label> free;
+        for (const label j : nbrs[g])
+        {
+            if (!clamped_[j])
+            {
+                free.append(j);
+            }
+        }
+        if (free.empty())
+        {
+            continue;
+        }
+        if (free.size() > 1)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "clampAt face: the clamped particle at " << X_[g]
+                << " touches " << free.size() << " free particles (at "
+                << UIndirectList<vector2D>(X_, free) << "); a face clamp"
+                << " needs a straight face between clamped and free"
+                << " particles (use clampAt particles)" << exit(FatalIOError);
+        }
+        const label m1 = free[0];
+        const vector2D beyond(2*X_[m1] - X_[g]);
+        label m2 = -1;
+        for (const label j : nbrs[m1])
+        {
+            if (!clamped_[j] && mag(X_[j] - beyond) < 1e-3*ds_)
+            {
+                m2 = j;
+            }
+        }
+        if (m2 < 0)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "clampAt face: no free particle at " << beyond
+                << ", two spacings across the face from the clamped"
+                << " particle at " << X_[g] << " (the structure beyond a"
+                << " face clamp must be two particles long on the lattice;"
+                << " use clampAt particles)" << exit(FatalIOError);
+        }
+        ghost.append(g);
+        near.append(m1);
+        far.append(m2);
+    }
+    ghost_.transfer(ghost);
+    ghostNear_.transfer(near);
+    ghostFar_.transfer(far);
+}
+
+
+void Foam::structureModel::clampedInternalForces
+(
+    List<vector2D>& force,
+    scalarList& torque
+)
+{
+    if (ghost_.empty())
+    {
+        internalForces(force, torque);
+        return;
+    }
+
+    // Quadratic extrapolation through the face: ghost at -ds/2, m1 at
+    // ds/2, m2 at 3 ds/2, u(face) = 0
+    const scalar a1 = -2, a2 = 1.0/3.0;
+
+    // The ghosts exist only inside the evaluation: the clamped particles
+    // keep the support's motion (walls attached to them, output, restart)
+    const label nG = ghost_.size();
+    List<vector2D> held(nG);
+    scalarList heldTheta(nG);
+    forAll(ghost_, k)
+    {
+        const label g = ghost_[k], m1 = ghostNear_[k], m2 = ghostFar_[k];
+        held[k] = x_[g];
+        heldTheta[k] = theta_[g];
+        // the support's displacement is the ghost's own held one
+        const vector2D c(x_[g] - X_[g]);
+        x_[g] =
+            x_[g]
+          + a1*(x_[m1] - X_[m1] - c)
+          + a2*(x_[m2] - X_[m2] - c);
+        theta_[g] =
+            theta_[g]
+          + a1*(theta_[m1] - heldTheta[k])
+          + a2*(theta_[m2] - heldTheta[k]);
+    }
+
+    internalForces(force, torque);
+
+    forAll(ghost_, k)
+    {
+        const label g = ghost_[k], m1 = ghostNear_[k], m2 = ghostFar_[k];
+        x_[g] = held[k];
+        theta_[g] = heldTheta[k];
+        force[m1] += a1*force[g];
+        force[m2] += a2*force[g];
+        torque[m1] += a1*torque[g];
+        torque[m2] += a2*torque[g];
+        force[g] *= 1 - a1 - a2;
+        torque[g] *= 1 - a1 - a2;
+    }
+}
+
+
 void Foam::structureModel::updateAcceleration()
 {
-    internalForces(a_, alpha_);
+    clampedInternalForces(a_, alpha_);
 
     const scalar m = mass();
     const scalar I = rotationalInertia();
@@ -98,7 +219,7 @@ Foam::scalar Foam::structureModel::maxEigenfrequency() const
     scalarList T0(n), T1(n);
     self.x_ = X_;
     self.theta_ = 0;
-    internalForces(F0, T0);
+    self.clampedInternalForces(F0, T0);
 
     scalar lambdaMax = 0;
     // Perturbation: displacements of at most 1e-6 spacings
@@ -122,7 +243,7 @@ Foam::scalar Foam::structureModel::maxEigenfrequency() const
             self.x_[i] = X_[i] + eps*u[i]/sm;
             self.theta_[i] = eps*r[i]/sI;
         }
-        internalForces(F1, T1);
+        self.clampedInternalForces(F1, T1);
 
         scalar rayleigh = 0;
         forAll(u, i)
@@ -152,7 +273,7 @@ Foam::scalar Foam::structureModel::maxEigenfrequency() const
 
     // The models keep strains of their last evaluation: evaluate the
     // restored state again so that no perturbed strain is left behind
-    internalForces(F0, T0);
+    self.clampedInternalForces(F0, T0);
 
     return ::sqrt(max(lambdaMax, scalar(0)));
 }
@@ -189,6 +310,7 @@ Foam::structureModel::structureModel
     f_(X.size(), Zero),
     clamped_(clamped),
     clampedVelocity_(Zero),
+    clampAtFace_(false),
     time_(0),
     externalWork_(0),
     supportWork_(0),
@@ -231,6 +353,18 @@ Foam::structureModel::structureModel
             << clamped.size() << " clamped flags for " << X.size()
             << " particles" << exit(FatalError);
     }
+
+    const word clampAt(dict.getOrDefault<word>("clampAt", "particles"));
+    if (clampAt != "particles" && clampAt != "face")
+    {
+        FatalIOErrorInFunction(dict)
+            << "clampAt " << clampAt << " is not valid: particles (the"
+            << " clamped particles are held, with their strain energy) or"
+            << " face (the support acts at the face between clamped and"
+            << " free particles)" << exit(FatalIOError);
+    }
+    clampAtFace_ = (clampAt == "face");
+    findGhosts();
 
     mu_ = E_/(2*(1 + nu_));
     lambda_ = E_*nu_/((1 + nu_)*(1 - 2*nu_));

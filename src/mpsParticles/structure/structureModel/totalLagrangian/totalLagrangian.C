@@ -97,6 +97,14 @@ Foam::structureModels::totalLagrangian::totalLagrangian
     F_(X.size(), tensor2D::I),
     P_(X.size(), tensor2D::zero)
 {
+    if (clampAtFace_)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "clampAt face is not available with totalLagrangian (its"
+            << " kernel reaches beyond the first clamped layer); use clampAt"
+            << " particles" << exit(FatalIOError);
+    }
+
     // Reference neighbours and kernel gradients, fixed from now on
     const neighbourList nbrs(X_, 2*h_);
     offsets_ = nbrs.offsets();
