@@ -136,7 +136,7 @@ void Foam::structureModels::rotatingParticles::internalForces
 
     // Forces and torques, gathered per particle
     const scalar VD = V*D_;
-    const scalar VH = V*hourglass_;
+    const scalar VHds2 = V*hourglass_/sqr(ds_);
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < size(); ++i)
@@ -153,7 +153,7 @@ void Foam::structureModels::rotatingParticles::internalForces
             F += vector2D(c*s.x() - sn*s.y(), sn*s.x() + c*s.y());
             dUdTheta -= 0.5*cross(q_[e], s);
             dUdTheta += VD*((kappa_[j] & c_[er]) - (kappa_[i] & c_[e]));
-            dUdTheta += VH*(lapTheta_[j] - lapTheta_[i])/sqr(ds_);
+            dUdTheta += VHds2*(lapTheta_[j] - lapTheta_[i]);
         }
         force[i] = F;
         torque[i] = -dUdTheta;
