@@ -120,9 +120,22 @@ void Foam::structureModels::rotatingParticles::internalForces
             // a face clamp's clamped particle: no energy of its own
             kappa_[i] = Zero;
             S_[i] = tensor2D::zero;
+            for (label e = offsets_[i]; e < offsets_[i + 1]; ++e)
+            {
+                residual_[e] = Zero;
+            }
             continue;
         }
         kappa_[i] = k;
+
+        // The fit's residual: what the uniform deformation G misses
+        for (label e = offsets_[i]; e < offsets_[i + 1]; ++e)
+        {
+            residual_[e] =
+                c_[e] == vector2D::zero
+              ? vector2D::zero
+              : (q_[e] - dX_[e] - (G & dX_[e]))/magSqr(dX_[e]);
+        }
 
         const symmTensor2D sigma(stress(i, symm(G)));
         const scalar w = G.xy() - G.yx();
@@ -137,6 +150,7 @@ void Foam::structureModels::rotatingParticles::internalForces
     // Forces and torques, gathered per particle
     const scalar VD = V*D_;
     const scalar VHds2 = V*hourglass_/sqr(ds_);
+    const scalar VGr = V*residualModulus_;
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < size(); ++i)
@@ -147,7 +161,11 @@ void Foam::structureModels::rotatingParticles::internalForces
         {
             const label j = nbr_[e];
             const label er = reverse_[e];
-            const vector2D s((S_[i] & c_[e]) - (S_[j] & c_[er]));
+            const vector2D s
+            (
+                (S_[i] & c_[e]) + VGr*residual_[e]
+              - (S_[j] & c_[er]) - VGr*residual_[er]
+            );
             const scalar c = rot_[e].x();
             const scalar sn = rot_[e].y();
             F += vector2D(c*s.x() - sn*s.y(), sn*s.x() + c*s.y());
@@ -174,11 +192,13 @@ Foam::structureModels::rotatingParticles::rotatingParticles
     structureModel(dict, X, clamped, spacing),
     D_(bendingModulus()*sqr(spacing)/12),
     hourglass_(0.25*D_*sqr(spacing)),
+    residualModulus_(0.1*mu_),
     normal_(X.size(), Zero),
     Gamma_(X.size(), tensor2D::zero),
     kappa_(X.size(), Zero),
     S_(X.size(), tensor2D::zero),
-    lapTheta_(X.size(), Zero)
+    lapTheta_(X.size(), Zero),
+    residual_()
 {
     const label n = size();
     const neighbourList candidates(X_, 2.1*ds_);
@@ -318,6 +338,7 @@ Foam::structureModels::rotatingParticles::rotatingParticles
     c_.setSize(nPairs);
     q_.setSize(nPairs);
     rot_.setSize(nPairs);
+    residual_.setSize(nPairs, Zero);
     forAll(partners, i)
     {
         label e = offsets_[i];
@@ -388,6 +409,11 @@ Foam::scalar Foam::structureModels::rotatingParticles::strainEnergy() const
         }
         const symmTensor2D eps(symm(Gamma_[i]));
         const scalar w = Gamma_[i].xy() - Gamma_[i].yx();
+        for (label p = offsets_[i]; p < offsets_[i + 1]; ++p)
+        {
+            // |r_ij|^2/|X_ij|^2
+            e += 0.5*V*residualModulus_*magSqr(residual_[p])*magSqr(dX_[p]);
+        }
         e += 0.5*V
            *(
                 (stress(i, eps) && eps) + mu_*sqr(w) + D_*magSqr(kappa_[i])
