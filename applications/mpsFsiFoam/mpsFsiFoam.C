@@ -96,10 +96,11 @@ int main(int argc, char *argv[])
 
         // Fluid first; then the coupling step: wall pressures to the
         // structure, its sub-steps, the attached walls moved with it
-        const mpsFluid::stepInfo& info = fluid.step(dt);
+        // (coupling.scheme implicit: the pressure and the structure's
+        // step iterated until they agree on the walls' velocities)
+        const mpsFluid::stepInfo& info =
+            coupling.step(fluid, runTime.value(), dt);
         #include "checkFluidStep.H"
-
-        coupling.evolve(runTime.value(), dt);
 
         runTime.write();
         if (runTime.writeTime())

@@ -709,10 +709,21 @@ void Foam::mpsFluid::evaluate()
 
 const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
 {
+    if (beginStep(dt))
+    {
+        solveStepPressure(dt);
+        endStep(dt);
+    }
+    return info_;
+}
+
+
+bool Foam::mpsFluid::beginStep(const scalar dt)
+{
     if (!cloud_.count(particleKind::fluid))
     {
         // A structure alone: nothing to do
-        return info_;
+        return false;
     }
 
     clockValue clock(true);
@@ -734,7 +745,7 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
     if (!info_.finite)
     {
         // Nothing more can be computed from non-finite positions
-        return info_;
+        return false;
     }
     info_.nRemoved = removeOutside();
     lap(info_.timeRest);
@@ -753,13 +764,23 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
         info_.nSurface += s;
     }
     lap(info_.timeRest);
+    return true;
+}
 
+
+void Foam::mpsFluid::solveStepPressure(const scalar dt)
+{
     // Assembly and solve: the solve's own time is measured inside
+    clockValue clock(true);
     solvePressure(dt);
-    lap(info_.timeAssembly);
-    info_.timeAssembly -= lastSolveTime_;
+    info_.timeAssembly += clock.elapsed() - lastSolveTime_;
     info_.timeSolve += lastSolveTime_;
+}
 
+
+const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
+{
+    clockValue clock(true);
     correct(dt);
     info_.finite = allFinite() && std::isfinite(info_.ppeResidual);
     const label nLeft = removeOutside();
@@ -774,7 +795,7 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
             cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_
         );
     }
-    lap(info_.timeRest);
+    info_.timeRest += clock.elapsed();
 
     return info_;
 }

@@ -213,7 +213,13 @@ Foam::fluidStructureInterface::fluidStructureInterface
     fluidForce_(Zero),
     wallWork_(0),
     maxImbalance_(0),
-    time_(0)
+    time_(0),
+    implicit_(false),
+    maxIterations_(50),
+    tolerance_(1e-3),
+    lastIterations_(0),
+    totalIterations_(0),
+    nUnconverged_(0)
 {
     const dictionary* dictPtr = structureProperties.findDict("coupling");
     if (!dictPtr)
@@ -230,6 +236,32 @@ Foam::fluidStructureInterface::fluidStructureInterface
             << exit(FatalIOError);
     }
     fluidPressure_ = (wallPressure == "fluid");
+    const word scheme(dict.getOrDefault<word>("scheme", "explicit"));
+    if (scheme != "explicit" && scheme != "implicit")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'scheme': " << scheme << " is not valid" << nl
+            << "Valid coupling schemes: (explicit implicit)"
+            << exit(FatalIOError);
+    }
+    implicit_ = (scheme == "implicit");
+    if (implicit_ && fluidPressure_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'scheme' implicit needs 'wallPressure' solved: the"
+            << " fluid's pressure gradients (wallPressure fluid) are"
+            << " computed in the fluid's correction, after the iterations"
+            << exit(FatalIOError);
+    }
+    maxIterations_ = dict.getOrDefault<label>("maxIterations", maxIterations_);
+    tolerance_ = dict.getOrDefault<scalar>("tolerance", tolerance_);
+    if (maxIterations_ < 1 || !(tolerance_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries 'maxIterations' (at least 1, got " << maxIterations_
+            << ") and 'tolerance' (above 0, got " << tolerance_ << ")"
+            << exit(FatalIOError);
+    }
     if (!structure_.active())
     {
         FatalIOErrorInFunction(dict)
@@ -310,6 +342,25 @@ void Foam::fluidStructureInterface::evolve
 }
 
 
+void Foam::fluidStructureInterface::wallMotion
+(
+    List<vector2D>& x,
+    List<vector2D>& U
+) const
+{
+    const structureModel& model = structure_.model();
+    x.setSize(attachedId_.size());
+    U.setSize(attachedId_.size());
+    forAll(attachedId_, k)
+    {
+        const label s = anchor_[k];
+        const vector2D d(structureModel::rotate(model.theta()[s], offset_[k]));
+        x[k] = model.x()[s] + d;
+        U[k] = model.v()[s] + model.omega()[s]*vector2D(-d.y(), d.x());
+    }
+}
+
+
 void Foam::fluidStructureInterface::moveWalls()
 {
     if (!active())
@@ -317,23 +368,124 @@ void Foam::fluidStructureInterface::moveWalls()
         return;
     }
     const labelList attached(cloud_.indices(attachedId_, "attached wall"));
-    const structureModel& model = structure_.model();
-
+    List<vector2D> x, U;
+    wallMotion(x, U);
     forAll(attached, k)
     {
         const label i = attached[k];
-        const label s = anchor_[k];
-        const vector2D d(structureModel::rotate(model.theta()[s], offset_[k]));
-        const vector2D x(model.x()[s] + d);
         if (wallForce_.size() == attached.size())
         {
             // The fluid's force on it along its motion (interface walls;
             // the others carry none)
-            wallWork_ += wallForce_[k] & (x - cloud_.x()[i]);
+            wallWork_ += wallForce_[k] & (x[k] - cloud_.x()[i]);
         }
-        cloud_.x()[i] = x;
-        cloud_.U()[i] = model.v()[s] + model.omega()[s]*vector2D(-d.y(), d.x());
+        cloud_.x()[i] = x[k];
+        cloud_.U()[i] = U[k];
     }
+}
+
+
+const Foam::mpsFluid::stepInfo& Foam::fluidStructureInterface::step
+(
+    mpsFluid& fluid,
+    const scalar t,
+    const scalar deltaT
+)
+{
+    if (!implicit_ || !active())
+    {
+        const mpsFluid::stepInfo& info = fluid.step(deltaT);
+        if (info.finite)
+        {
+            evolve(t, deltaT);
+        }
+        return info;
+    }
+
+    if (!fluid.beginStep(deltaT))
+    {
+        if (fluid.info().finite)
+        {
+            // No fluid: the structure alone
+            evolve(t, deltaT);
+        }
+        return fluid.info();
+    }
+
+    // Fixed point on the attached particles' velocities, which enter the
+    // pressure through the divergence: the pressure solved with the walls
+    // at the guessed end-of-step velocity, the structure's step under it,
+    // the walls' new velocity; Aitken's relaxation (Kuettler & Wall 2008)
+    const labelList attached(cloud_.indices(attachedId_, "attached wall"));
+    const label n = attached.size();
+    List<vector2D> guess(n), x, U, r(n), rOld(n);
+    forAll(attached, k)
+    {
+        guess[k] = cloud_.U()[attached[k]];
+    }
+    structure_.saveState();
+    scalar omega = 0.5;
+    lastIterations_ = 0;
+    bool converged = false;
+    while (lastIterations_ < maxIterations_)
+    {
+        ++lastIterations_;
+        forAll(attached, k)
+        {
+            cloud_.U()[attached[k]] = guess[k];
+        }
+        fluid.solveStepPressure(deltaT);
+
+        clockValue clock(true);
+        transferPressure();
+        time_ += clock.elapsed();
+        if (lastIterations_ > 1)
+        {
+            structure_.restoreState();
+        }
+        structure_.advance(t, deltaT, force_);
+        wallMotion(x, U);
+
+        scalar r2 = 0, U2 = 0;
+        forAll(r, k)
+        {
+            r[k] = U[k] - guess[k];
+            r2 += magSqr(r[k]);
+            U2 += magSqr(U[k]);
+        }
+        if (r2 <= sqr(tolerance_)*max(U2, VSMALL))
+        {
+            converged = true;
+            break;
+        }
+        if (lastIterations_ > 1)
+        {
+            scalar num = 0, den = 0;
+            forAll(r, k)
+            {
+                const vector2D dr(r[k] - rOld[k]);
+                num += rOld[k] & dr;
+                den += magSqr(dr);
+            }
+            if (den > 0)
+            {
+                omega = -omega*num/den;
+            }
+        }
+        forAll(guess, k)
+        {
+            guess[k] += omega*r[k];
+        }
+        rOld = r;
+    }
+    totalIterations_ += lastIterations_;
+    nUnconverged_ += !converged;
+
+    const mpsFluid::stepInfo& info = fluid.endStep(deltaT);
+    clockValue clock(true);
+    moveWalls();
+    time_ += clock.elapsed();
+    return info;
 }
 
 

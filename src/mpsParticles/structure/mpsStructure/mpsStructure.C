@@ -254,7 +254,7 @@ Foam::scalar Foam::mpsStructure::spacing
     {
         inputChecks::keywords
         (
-            *coupling, {"walls", "pressureRadius", "wallPressure"}, "coupling"
+            *coupling, {"walls", "pressureRadius", "wallPressure", "scheme", "maxIterations", "tolerance"}, "coupling"
         );
     }
 
@@ -318,7 +318,9 @@ Foam::mpsStructure::mpsStructure
     fluidDeltaT_(-1),
     nSubSteps_(0),
     totalSubSteps_(0),
-    wallTime_(0)
+    wallTime_(0),
+    savedBodyVelocity_(Zero),
+    savedSubSteps_(0)
 {
     const label begin = cloud_.begin(particleKind::structure);
     const label n = cloud_.count(particleKind::structure);
@@ -435,6 +437,35 @@ void Foam::mpsStructure::advance
     checkFinite(t);
     toCloud();
     wallTime_ += clock.elapsed();
+}
+
+
+void Foam::mpsStructure::saveState()
+{
+    if (!active())
+    {
+        return;
+    }
+    model_->saveState();
+    savedBodyVelocity_ =
+        motion_.valid() ? motion_->velocity() : vector2D(Zero);
+    savedSubSteps_ = totalSubSteps_;
+}
+
+
+void Foam::mpsStructure::restoreState()
+{
+    if (!active())
+    {
+        return;
+    }
+    model_->restoreState();
+    if (motion_.valid())
+    {
+        motion_->restart(savedBodyVelocity_);
+    }
+    totalSubSteps_ = savedSubSteps_;
+    toCloud();
 }
 
 

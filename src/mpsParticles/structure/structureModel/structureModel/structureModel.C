@@ -447,6 +447,50 @@ Foam::label Foam::structureModel::setSubSteps(const scalar fluidDeltaT)
 }
 
 
+void Foam::structureModel::saveState()
+{
+    saved_.x = x_;
+    saved_.v = v_;
+    saved_.a = a_;
+    saved_.f = f_;
+    saved_.theta = theta_;
+    saved_.omega = omega_;
+    saved_.alpha = alpha_;
+    saved_.clampedVelocity = clampedVelocity_;
+    saved_.time = time_;
+    saved_.externalWork = externalWork_;
+    saved_.supportWork = supportWork_;
+    saved_.dampingLoss = dampingLoss_;
+    saved_.supportPower = supportPower_;
+    saved_.initialEnergy = initialEnergy_;
+}
+
+
+void Foam::structureModel::restoreState()
+{
+    if (saved_.x.size() != x_.size())
+    {
+        FatalErrorInFunction
+            << "No state was saved" << exit(FatalError);
+    }
+    x_ = saved_.x;
+    v_ = saved_.v;
+    a_ = saved_.a;
+    f_ = saved_.f;
+    theta_ = saved_.theta;
+    omega_ = saved_.omega;
+    alpha_ = saved_.alpha;
+    clampedVelocity_ = saved_.clampedVelocity;
+    time_ = saved_.time;
+    externalWork_ = saved_.externalWork;
+    supportWork_ = saved_.supportWork;
+    dampingLoss_ = saved_.dampingLoss;
+    supportPower_ = saved_.supportPower;
+    initialEnergy_ = saved_.initialEnergy;
+    restored();
+}
+
+
 void Foam::structureModel::advance(const label nSteps)
 {
     if (dt_ <= 0)
