@@ -221,7 +221,7 @@ Foam::scalar Foam::mpsStructure::spacing
             "structureModel", "rho", "E", "nu", "planeStrain", "spacing",
             "spacingRatio", "nSubSteps", "deltaT", "damping", "g",
             "clamped", "clampAt", "clampedVelocity", "bodyMotion",
-            "initialVelocity", "loads", "coupling"
+            "initialVelocity", "loads", "coupling", "releaseTime"
         },
         "constant/structureProperties"
     );
@@ -319,6 +319,7 @@ Foam::mpsStructure::mpsStructure
     nSubSteps_(0),
     totalSubSteps_(0),
     wallTime_(0),
+    releaseTime_(structureProperties.getOrDefault<scalar>("releaseTime", -GREAT)),
     savedBodyVelocity_(Zero),
     savedSubSteps_(0)
 {
@@ -396,6 +397,14 @@ void Foam::mpsStructure::advance
     {
         nSubSteps_ = model_->setSubSteps(fluidDeltaT);
         fluidDeltaT_ = fluidDeltaT;
+    }
+
+    if (t < releaseTime_ + 0.5*fluidDeltaT)
+    {
+        // Held until the release: at rest in the reference state
+        toCloud();
+        wallTime_ += clock.elapsed();
+        return;
     }
 
     // The body's motion over the step, under the fluid force just solved
