@@ -424,6 +424,9 @@ const Foam::mpsFluid::stepInfo& Foam::fluidStructureInterface::step
         guess[k] = cloud_.U()[attached[k]];
     }
     structure_.saveState();
+    // Every iteration solves from the step's old pressure (the rate form
+    // of the compressibility reads it)
+    const scalarList pOld(cloud_.p());
     scalar omega = 0.5;
     lastIterations_ = 0;
     bool converged = false;
@@ -433,6 +436,10 @@ const Foam::mpsFluid::stepInfo& Foam::fluidStructureInterface::step
         forAll(attached, k)
         {
             cloud_.U()[attached[k]] = guess[k];
+        }
+        if (lastIterations_ > 1)
+        {
+            cloud_.p().deepCopy(pOld);
         }
         fluid.solveStepPressure(deltaT);
 
