@@ -360,6 +360,13 @@ Foam::mpsStructure::mpsStructure
 
     if (dict_.found("initialVelocity"))
     {
+        if (dict_.found("releaseTime"))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entries 'releaseTime' and 'initialVelocity' exclude each"
+                << " other: a held structure is at rest until its release"
+                << exit(FatalIOError);
+        }
         setInitialVelocity(dict_.subDict("initialVelocity"));
     }
     if (dict_.found("loads"))

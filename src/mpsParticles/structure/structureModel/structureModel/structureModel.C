@@ -451,11 +451,9 @@ void Foam::structureModel::saveState()
 {
     saved_.x = x_;
     saved_.v = v_;
-    saved_.a = a_;
     saved_.f = f_;
     saved_.theta = theta_;
     saved_.omega = omega_;
-    saved_.alpha = alpha_;
     saved_.clampedVelocity = clampedVelocity_;
     saved_.time = time_;
     saved_.externalWork = externalWork_;
@@ -475,11 +473,9 @@ void Foam::structureModel::restoreState()
     }
     x_ = saved_.x;
     v_ = saved_.v;
-    a_ = saved_.a;
     f_ = saved_.f;
     theta_ = saved_.theta;
     omega_ = saved_.omega;
-    alpha_ = saved_.alpha;
     clampedVelocity_ = saved_.clampedVelocity;
     time_ = saved_.time;
     externalWork_ = saved_.externalWork;
