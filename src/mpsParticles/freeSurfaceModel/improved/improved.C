@@ -27,6 +27,14 @@ namespace freeSurfaceModels
 }
 
 
+const Foam::Enum<Foam::freeSurfaceModels::improved::wallTestType>
+Foam::freeSurfaceModels::improved::wallTestTypeNames
+({
+    { wallTestType::numberDensity, "numberDensity" },
+    { wallTestType::asymmetry, "asymmetry" },
+});
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::freeSurfaceModels::improved::improved(const dictionary& dict)
@@ -34,12 +42,19 @@ Foam::freeSurfaceModels::improved::improved(const dictionary& dict)
     freeSurfaceModel(dict),
     beta_(readFraction("beta", 0.8)),
     asymmetry_(readFraction("asymmetry", 0.6)),
+    wallTest_
+    (
+        wallTestTypeNames.getOrDefault
+        (
+            "wallTest", dict, wallTestType::numberDensity
+        )
+    ),
     wallBeta_(readFraction("wallBeta", 0.97))
 {
     inputChecks::keywords
     (
         dict,
-        {"type", "beta", "asymmetry", "wallBeta"},
+        {"type", "beta", "asymmetry", "wallTest", "wallBeta"},
         "freeSurface improved"
     );
 }
@@ -62,7 +77,20 @@ void Foam::freeSurfaceModels::improved::identify
     (
         cloud, nbrs, w, n0, F0, beta_, asymmetry_, particleKind::fluid, surface
     );
-    numberDensityTest(cloud, wallBeta_, n0, particleKind::wall, surface);
+    if (wallTest_ == wallTestType::asymmetry)
+    {
+        wallAsymmetryTest
+        (
+            cloud, nbrs, w, n0, F0, beta_, asymmetry_, surface
+        );
+    }
+    else
+    {
+        numberDensityTest
+        (
+            cloud, wallBeta_, n0, particleKind::wall, surface
+        );
+    }
 }
 
 
