@@ -17,6 +17,30 @@
 using namespace Foam;
 using Catch::Matchers::Contains;
 
+
+// The kernel weights of the neighbour pairs, and each particle's number
+// density (into the cloud)
+static List<scalar> pairWeights
+(
+    mpsCloud& c,
+    const neighbourList& nbrs,
+    const mpsKernel& k
+)
+{
+    List<scalar> w(nbrs.nPairs());
+    forAll(c.x(), i)
+    {
+        scalar ni = 0;
+        for (label kk = nbrs.offsets()[i]; kk < nbrs.offsets()[i + 1]; ++kk)
+        {
+            w[kk] = k.w(mag(c.x()[nbrs.neighbours()[kk]] - c.x()[i]));
+            ni += w[kk];
+        }
+        c.n()[i] = ni;
+    }
+    return w;
+}
+
 TEST_CASE("flat-surface asymmetry F0 at re 2.1 l0 by hand")
 {
     // Neighbours in the row below at distance l0 (w = 1.1), sqrt(2) l0
@@ -170,17 +194,7 @@ TEST_CASE("free-surface models on a lattice tank")
     const scalar n0 = k->latticeNumberDensity(l0);
     const scalar F0 = k->latticeSurfaceAsymmetry(l0);
     const neighbourList nbrs(c.x(), 2.1*l0);
-    List<scalar> w(nbrs.nPairs());
-    forAll(c.x(), i)
-    {
-        scalar ni = 0;
-        for (label kk = nbrs.offsets()[i]; kk < nbrs.offsets()[i + 1]; ++kk)
-        {
-            w[kk] = k->w(mag(c.x()[nbrs.neighbours()[kk]] - c.x()[i]));
-            ni += w[kk];
-        }
-        c.n()[i] = ni;
-    }
+    const List<scalar> w(pairWeights(c, nbrs, k()));
 
     auto flagged = [&](const word& type)
     {
@@ -277,21 +291,10 @@ TEST_CASE("wall tests: water standing off a flat wall, a wall on a wall")
     const scalar F0 = k->latticeSurfaceAsymmetry(l0);
 
     // The middle wall particles flagged, of how many
-    auto middleFlagged = [&](const mpsCloud& c, const word& type)
+    auto middleFlagged = [&](mpsCloud c, const word& type)
     {
         const neighbourList nbrs(c.x(), 2.1*l0);
-        List<scalar> w(nbrs.nPairs());
-        mpsCloud& cc = const_cast<mpsCloud&>(c);
-        forAll(c.x(), i)
-        {
-            scalar ni = 0;
-            for (label kk = nbrs.offsets()[i]; kk < nbrs.offsets()[i + 1]; ++kk)
-            {
-                w[kk] = k->w(mag(c.x()[nbrs.neighbours()[kk]] - c.x()[i]));
-                ni += w[kk];
-            }
-            cc.n()[i] = ni;
-        }
+        const List<scalar> w(pairWeights(c, nbrs, k()));
         const dictionary d(test::dict("freeSurface { type " + type + "; }"));
         List<bool> s(c.size(), false);
         freeSurfaceModel::New(d)->identify(c, nbrs, w, n0, F0, s);

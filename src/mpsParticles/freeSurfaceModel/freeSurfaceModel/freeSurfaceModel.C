@@ -74,7 +74,8 @@ void Foam::freeSurfaceModel::asymmetryTest
     const scalar beta,
     const scalar asymmetry,
     const particleKind kind,
-    UList<bool>& surface
+    UList<bool>& surface,
+    const bool wallNeighbourhood
 )
 {
     const UList<vector2D>& x = cloud.x();
@@ -96,63 +97,20 @@ void Foam::freeSurfaceModel::asymmetryTest
             surface[i] = true;
             continue;
         }
+        bool wet = !wallNeighbourhood;
         vector2D F(Zero);
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
             const label j = nbr[k];
-            if (kinds[j] == particleKind::dummy)
+            if (kinds[j] == particleKind::dummy && !wallNeighbourhood)
             {
                 continue;
             }
-            const vector2D d(x[i] - x[j]);
-            F += (w[k]/max(mag(d), SMALL))*d;
-        }
-        // |(2/n0) F| > asymmetry F0
-        surface[i] = (magSqr(F) > limit);
-    }
-}
-
-
-void Foam::freeSurfaceModel::wallAsymmetryTest
-(
-    const mpsCloud& cloud,
-    const neighbourList& nbrs,
-    const UList<scalar>& w,
-    const scalar n0,
-    const scalar F0,
-    const scalar beta,
-    const scalar asymmetry,
-    UList<bool>& surface
-)
-{
-    const UList<vector2D>& x = cloud.x();
-    const UList<scalar>& n = cloud.n();
-    const UList<particleKind>& kinds = cloud.kind();
-    const labelList& offsets = nbrs.offsets();
-    const labelList& nbr = nbrs.neighbours();
-    const scalar limit = sqr(asymmetry*F0*n0/2);
-
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < cloud.size(); ++i)
-    {
-        if (kinds[i] != particleKind::wall)
-        {
-            continue;
-        }
-        if (n[i] < beta*n0)
-        {
-            surface[i] = true;
-            continue;
-        }
-        bool wet = false;
-        vector2D F(Zero);
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-        {
-            const label j = nbr[k];
             wet = wet || kinds[j] == particleKind::fluid;
             const vector2D d(x[i] - x[j]);
             F += (w[k]/max(mag(d), SMALL))*d;
         }
+        // |(2/n0) F| > asymmetry F0
         surface[i] = !wet || (magSqr(F) > limit);
     }
 }

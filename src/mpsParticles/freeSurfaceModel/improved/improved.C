@@ -79,9 +79,10 @@ void Foam::freeSurfaceModels::improved::identify
     );
     if (wallTest_ == wallTestType::asymmetry)
     {
-        wallAsymmetryTest
+        asymmetryTest
         (
-            cloud, nbrs, w, n0, F0, beta_, asymmetry_, surface
+            cloud, nbrs, w, n0, F0, beta_, asymmetry_, particleKind::wall,
+            surface, true
         );
     }
     else
