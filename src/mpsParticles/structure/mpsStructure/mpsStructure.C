@@ -254,7 +254,12 @@ Foam::scalar Foam::mpsStructure::spacing
     {
         inputChecks::keywords
         (
-            *coupling, {"walls", "pressureRadius", "wallPressure", "scheme", "maxIterations", "tolerance"}, "coupling"
+            *coupling,
+            {
+                "walls", "pressureRadius", "wallPressure", "scheme",
+                "maxIterations", "tolerance"
+            },
+            "coupling"
         );
     }
 

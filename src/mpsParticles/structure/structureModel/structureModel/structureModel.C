@@ -447,20 +447,44 @@ Foam::label Foam::structureModel::setSubSteps(const scalar fluidDeltaT)
 }
 
 
+namespace
+{
+    // One member of the state to its kept copy (save) or back (restore)
+    template<class Type>
+    void keep(const bool save, Type& live, Type& kept)
+    {
+        if (save)
+        {
+            kept = live;
+        }
+        else
+        {
+            live = kept;
+        }
+    }
+}
+
+
+void Foam::structureModel::transferState(const bool save)
+{
+    keep(save, x_, saved_.x);
+    keep(save, v_, saved_.v);
+    keep(save, f_, saved_.f);
+    keep(save, theta_, saved_.theta);
+    keep(save, omega_, saved_.omega);
+    keep(save, clampedVelocity_, saved_.clampedVelocity);
+    keep(save, time_, saved_.time);
+    keep(save, externalWork_, saved_.externalWork);
+    keep(save, supportWork_, saved_.supportWork);
+    keep(save, dampingLoss_, saved_.dampingLoss);
+    keep(save, supportPower_, saved_.supportPower);
+    keep(save, initialEnergy_, saved_.initialEnergy);
+}
+
+
 void Foam::structureModel::saveState()
 {
-    saved_.x = x_;
-    saved_.v = v_;
-    saved_.f = f_;
-    saved_.theta = theta_;
-    saved_.omega = omega_;
-    saved_.clampedVelocity = clampedVelocity_;
-    saved_.time = time_;
-    saved_.externalWork = externalWork_;
-    saved_.supportWork = supportWork_;
-    saved_.dampingLoss = dampingLoss_;
-    saved_.supportPower = supportPower_;
-    saved_.initialEnergy = initialEnergy_;
+    transferState(true);
 }
 
 
@@ -471,18 +495,7 @@ void Foam::structureModel::restoreState()
         FatalErrorInFunction
             << "No state was saved" << exit(FatalError);
     }
-    x_ = saved_.x;
-    v_ = saved_.v;
-    f_ = saved_.f;
-    theta_ = saved_.theta;
-    omega_ = saved_.omega;
-    clampedVelocity_ = saved_.clampedVelocity;
-    time_ = saved_.time;
-    externalWork_ = saved_.externalWork;
-    supportWork_ = saved_.supportWork;
-    dampingLoss_ = saved_.dampingLoss;
-    supportPower_ = saved_.supportPower;
-    initialEnergy_ = saved_.initialEnergy;
+    transferState(false);
     restored();
 }
 
