@@ -50,7 +50,7 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
         dict,
         {
             "rho", "nu", "g", "l0", "kernel", "re", "ppe", "freeSurface",
-            "collision", "pressureSolver", "pressureGradient"
+            "collision", "pressureSolver", "pressureGradient", "shifting"
         },
         "constant/mpsProperties"
     );
@@ -658,6 +658,7 @@ Foam::mpsFluid::mpsFluid
 
     freeSurface_ = freeSurfaceModel::New(dict);
     collision_ = collisionModel::New(dict);
+    shifting_ = particleShifting::New(dict);
     gradient_ = pressureGradient::New(dict);
     solver_ = pressureSolver::New(dict);
 }
@@ -795,6 +796,7 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
             cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_
         );
     }
+    info_.maxShift = shifting_->shift(cloud_, nbrs_, l0_, kN_->re(), dt);
     info_.timeRest += clock.elapsed();
 
     return info_;

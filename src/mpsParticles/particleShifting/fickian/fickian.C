@@ -1,0 +1,250 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fickian.H"
+#include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
+#include "tensor2D.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace particleShiftings
+{
+    defineTypeNameAndDebug(fickian, 0);
+    addToRunTimeSelectionTable(particleShifting, fickian, dictionary);
+}
+}
+
+const Foam::Enum<Foam::particleShiftings::fickian::diffusionType>
+Foam::particleShiftings::fickian::diffusionTypeNames
+({
+    { diffusionType::velocity, "velocity" },
+    { diffusionType::fixed, "fixed" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::particleShiftings::fickian::W
+(
+    const scalar r,
+    const scalar re
+)
+{
+    const scalar h = 0.5*re, q = r/h;
+    if (q >= 2)
+    {
+        return 0;
+    }
+    const scalar sigma = 7/(4*constant::mathematical::pi*sqr(h));
+    return sigma*pow4(1 - 0.5*q)*(2*q + 1);
+}
+
+
+Foam::scalar Foam::particleShiftings::fickian::dWdr
+(
+    const scalar r,
+    const scalar re
+)
+{
+    const scalar h = 0.5*re, q = r/h;
+    if (q >= 2)
+    {
+        return 0;
+    }
+    const scalar sigma = 7/(4*constant::mathematical::pi*sqr(h));
+    return -(sigma/h)*5*q*pow3(1 - 0.5*q);
+}
+
+
+Foam::scalar Foam::particleShiftings::fickian::smallestEigenvalue
+(
+    const tensor2D& M
+)
+{
+    // M is symmetric: (xx + yy)/2 -+ sqrt(((xx - yy)/2)^2 + xy^2)
+    const scalar mean = 0.5*(M.xx() + M.yy());
+    return mean - ::sqrt(sqr(0.5*(M.xx() - M.yy())) + sqr(M.xy()));
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleShiftings::fickian::fickian(const dictionary& dict)
+:
+    particleShifting(dict),
+    diffusion_
+    (
+        diffusionTypeNames.getOrDefault("diffusion", dict, diffusionType::velocity)
+    ),
+    A_
+    (
+        dict.getOrDefault<scalar>
+        (
+            "coefficient", diffusion_ == diffusionType::velocity ? 2 : 0.25
+        )
+    ),
+    maxShift_(dict.getOrDefault<scalar>("maxShift", 0.1)),
+    R_(dict.getOrDefault<scalar>("tensileCorrection", 0.2)),
+    exponent_(dict.getOrDefault<scalar>("tensileExponent", 4))
+{
+    inputChecks::keywords
+    (
+        dict,
+        {
+            "type", "diffusion", "coefficient", "maxShift",
+            "tensileCorrection", "tensileExponent"
+        },
+        "shifting fickian"
+    );
+    inputChecks::values
+    (
+        dict,
+        {"coefficient", "maxShift", "tensileCorrection", "tensileExponent"}
+    );
+    if (!(A_ > 0 && A_ <= 10))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coefficient' (A of the diffusion coefficient) must lie"
+            << " in (0, 10], got " << A_ << exit(FatalIOError);
+    }
+    if (!(maxShift_ > 0 && maxShift_ <= 0.5))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'maxShift' (largest shift in one step, in l0) must lie"
+            << " in (0, 0.5], got " << maxShift_ << exit(FatalIOError);
+    }
+    if (!(R_ >= 0 && R_ <= 1 && exponent_ >= 1 && exponent_ <= 8))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries 'tensileCorrection' (R, in [0, 1], got " << R_
+            << ") and 'tensileExponent' (n, in [1, 8], got " << exponent_
+            << ") are out of range" << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::particleShiftings::fickian::shift
+(
+    mpsCloud& cloud,
+    const neighbourList& nbrs,
+    const scalar l0,
+    const scalar re,
+    const scalar dt
+) const
+{
+    UList<vector2D>& x = cloud.x();
+    UList<vector2D>& U = cloud.U();
+    const UList<particleKind>& kind = cloud.kind();
+    const UList<bool>& surface = cloud.surface();
+    const labelList& offsets = nbrs.offsets();
+    const labelList& nbr = nbrs.neighbours();
+    const label n = offsets.size() - 1;
+
+    const scalar V = sqr(l0), h = 0.5*re;
+    const scalar Wl0 = W(l0, re);
+    const scalar minR = 1e-3*l0, maxShift = maxShift_*l0;
+    // A renormalisation matrix is used where it is far from singular (it
+    // is the identity on a full neighbourhood, 0.09 in a quarter plane, 0
+    // with all neighbours on one line)
+    const scalar minEigenvalue = 0.05;
+
+    List<vector2D> dr(n, Zero);
+    List<vector2D> dU(n, Zero);
+    scalar largest = 0;
+
+    #pragma omp parallel for schedule(static) reduction(max:largest)
+    for (label i = 0; i < n; ++i)
+    {
+        if (kind[i] != particleKind::fluid)
+        {
+            continue;
+        }
+
+        vector2D gradC(Zero), g(Zero);
+        tensor2D M(Zero), Mf(Zero), S(Zero);
+        bool nearSurface = surface[i];
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            const vector2D d(x[j] - x[i]);
+            const scalar r = mag(d);
+            if (r < minR || r >= re)
+            {
+                continue;
+            }
+            const vector2D gW((-V*dWdr(r, re)/r)*d);    // V grad_i W_ij
+            g += gW;
+            gradC += (1 + R_*::pow(W(r, re)/Wl0, exponent_))*gW;
+            M += gW*d;
+            if (kind[j] == particleKind::fluid)
+            {
+                Mf += gW*d;
+                S += gW*(U[j] - U[i]);
+                nearSurface = nearSurface || surface[j];
+            }
+        }
+        // With d = x_j - x_i, grad_i W_ij = -W'(r) d/r points from i to j
+        // (W' < 0): grad C points into the fluid, where the neighbours
+        // are, and M = sum V grad_i W_ij d is symmetric positive definite
+        // (the identity on a full, regular neighbourhood)
+
+        if (nearSurface)
+        {
+            // Outward normal from the renormalised concentration gradient
+            vector2D nHat(smallestEigenvalue(M) > minEigenvalue ? (inv(M) & g) : g);
+            const scalar magN = mag(nHat);
+            if (magN > VSMALL)
+            {
+                nHat /= -magN;
+                gradC -= (gradC & nHat)*nHat;
+            }
+        }
+
+        const scalar D =
+            diffusion_ == diffusionType::velocity
+          ? A_*h*mag(U[i])*dt
+          : A_*sqr(h);
+        vector2D dri(-D*gradC);
+        const scalar magDr = mag(dri);
+        if (magDr > maxShift)
+        {
+            dri *= maxShift/magDr;
+        }
+        dr[i] = dri;
+        largest = max(largest, min(magDr, maxShift));
+
+        if (smallestEigenvalue(Mf) > minEigenvalue)
+        {
+            // grad U = Mf^-1 S (S_ab = sum V (grad_i W)_a (u_j - u_i)_b)
+            dU[i] = dri & (inv(Mf) & S);
+        }
+    }
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        x[i] += dr[i];
+        U[i] += dU[i];
+    }
+
+    return largest;
+}
+
+
+// ************************************************************************* //
