@@ -215,7 +215,7 @@ TEST_CASE("fickian shifting carries a linear velocity field exactly")
     }
     const List<vector2D> x0(t.cloud.x());
     const neighbourList nbrs(t.cloud.x(), re);
-    fickian("diffusion fixed; coefficient 0.5; maxShift 0.2;")->shift(t.cloud, nbrs, l0, re, 1e-3);
+    fickian("coefficient 6; maxShift 0.2;")->shift(t.cloud, nbrs, l0, re, 1e-3);
     scalar moved = 0, error = 0;
     for (label i = 0; i < t.N*t.N; ++i)
     {
@@ -238,6 +238,7 @@ TEST_CASE("shifting entries are checked")
     );
     CHECK_THROWS_WITH(fickian("maxShift 0.7;"), Contains("maxShift"));
     CHECK_THROWS_WITH(fickian("coefficient 0;"), Contains("coefficient"));
+    CHECK_THROWS_WITH(fickian("diffusion fixed; coefficient 0.25;"), Contains("0.1"));
     CHECK_THROWS_WITH(fickian("diffusion constant;"), Contains("velocity"));
     CHECK_THROWS_WITH(fickian("A 2;"), Contains("coefficient"));
 }
