@@ -129,7 +129,7 @@ TEST_CASE("fickian shifting leaves a regular lattice where it is")
     const List<vector2D> x0(t.cloud.x());
     const List<vector2D> U0(t.cloud.U());
     const neighbourList nbrs(t.cloud.x(), re);
-    fickian("diffusion fixed;")->shift(t.cloud, nbrs, l0, re, 1e-3);
+    fickian("diffusion fixed; surface tangential;")->shift(t.cloud, nbrs, l0, re, 1e-3);
 
     scalar inside = 0, sides = 0;
     for (label i = 0; i < t.N*t.N; ++i)
@@ -171,7 +171,7 @@ TEST_CASE("fickian shifting makes a disordered block regular and keeps its surfa
     };
     const scalar spread0 = numberDensitySpread(t);
     const scalar top0 = topRow();
-    autoPtr<particleShifting> model(fickian());
+    autoPtr<particleShifting> model(fickian("surface tangential;"));
     scalar largest = 0;
     for (label step = 0; step < 40; ++step)
     {
@@ -195,6 +195,27 @@ TEST_CASE("fickian shifting makes a disordered block regular and keeps its surfa
     // particle flagged, i.e. without the projection, it rises by 1.57 l0
     // and the spread falls only to 0.073)
     CHECK(mag(topRow() - top0) < 0.1);
+}
+
+
+TEST_CASE("fickian shifting with surface fixed leaves the flagged particles")
+{
+    tank t(12, 0.2);
+    forAll(t.cloud.U(), i)
+    {
+        t.cloud.U()[i] = (t.cloud.kind()[i] == particleKind::fluid ? vector2D(0, 1) : vector2D(Zero));
+    }
+    const List<vector2D> x0(t.cloud.x());
+    const neighbourList nbrs(t.cloud.x(), re);
+    fickian("surface fixed;")->shift(t.cloud, nbrs, l0, re, 0.1*l0);
+    scalar flagged = 0, others = 0;
+    for (label i = 0; i < t.N*t.N; ++i)
+    {
+        const scalar d = mag(t.cloud.x()[i] - x0[i])/l0;
+        (t.cloud.surface()[i] ? flagged : others) = max(t.cloud.surface()[i] ? flagged : others, d);
+    }
+    CHECK(flagged == 0);
+    CHECK(others > 1e-3);
 }
 
 
@@ -241,6 +262,7 @@ TEST_CASE("shifting entries are checked")
     CHECK_THROWS_WITH(fickian("diffusion fixed; coefficient 0.25;"), Contains("0.1"));
     CHECK_THROWS_WITH(fickian("diffusion constant;"), Contains("velocity"));
     CHECK_THROWS_WITH(fickian("A 2;"), Contains("coefficient"));
+    CHECK_THROWS_WITH(fickian("surface none;"), Contains("tangential") && Contains("fixed"));
 }
 
 

@@ -36,6 +36,14 @@ Foam::particleShiftings::fickian::diffusionTypeNames
 });
 
 
+const Foam::Enum<Foam::particleShiftings::fickian::surfaceType>
+Foam::particleShiftings::fickian::surfaceTypeNames
+({
+    { surfaceType::tangential, "tangential" },
+    { surfaceType::fixed, "fixed" },
+});
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::particleShiftings::fickian::W
@@ -90,6 +98,10 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
     (
         diffusionTypeNames.getOrDefault("diffusion", dict, diffusionType::velocity)
     ),
+    surface_
+    (
+        surfaceTypeNames.getOrDefault("surface", dict, surfaceType::fixed)
+    ),
     A_
     (
         dict.getOrDefault<scalar>
@@ -105,7 +117,7 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
     (
         dict,
         {
-            "type", "diffusion", "coefficient", "maxShift",
+            "type", "diffusion", "surface", "coefficient", "maxShift",
             "tensileCorrection", "tensileExponent"
         },
         "shifting fickian"
@@ -176,7 +188,11 @@ Foam::scalar Foam::particleShiftings::fickian::shift
     #pragma omp parallel for schedule(static) reduction(max:largest)
     for (label i = 0; i < n; ++i)
     {
-        if (kind[i] != particleKind::fluid)
+        if
+        (
+            kind[i] != particleKind::fluid
+         || (surface[i] && surface_ == surfaceType::fixed)
+        )
         {
             continue;
         }
