@@ -749,6 +749,7 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
         return false;
     }
     info_.nRemoved = removeOutside();
+    info_.totalRemoved += info_.nRemoved;
     lap(info_.timeRest);
 
     updateNeighbours();
@@ -786,6 +787,7 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
     info_.finite = allFinite() && std::isfinite(info_.ppeResidual);
     const label nLeft = removeOutside();
     info_.nRemoved += nLeft;
+    info_.totalRemoved += nLeft;
     if (nLeft)
     {
         // The pairs and gradients that fluidPressureAt reads belong to
