@@ -393,6 +393,18 @@ TEST_CASE("unknown fluid model names list the valid ones")
         test::errorOf([]{ freeSurfaceModel::New(test::dict("freeSurface { type improved; wallTest magic; }")); }),
         Contains("magic") && Contains("numberDensity") && Contains("asymmetry")
     );
+    // A dictionary where a value belongs: an error naming the entry, not
+    // OpenFOAM's abort
+    CHECK_THAT
+    (
+        test::errorOf([]{ freeSurfaceModel::New(test::dict("freeSurface { type improved; wallTest { a 1; } }")); }),
+        Contains("wallTest") && Contains("not a dictionary")
+    );
+    CHECK_THAT
+    (
+        test::errorOf([]{ freeSurfaceModel::New(test::dict("freeSurface { type improved; beta { a 1; } }")); }),
+        Contains("beta") && Contains("not a dictionary")
+    );
     CHECK_THAT
     (
         test::errorOf([]{ collisionModel::New(test::dict("collision { type pairwise; alpha 1.2; }")); }),

@@ -263,6 +263,8 @@ TEST_CASE("shifting entries are checked")
     CHECK_THROWS_WITH(fickian("diffusion constant;"), Contains("velocity"));
     CHECK_THROWS_WITH(fickian("A 2;"), Contains("coefficient"));
     CHECK_THROWS_WITH(fickian("surface none;"), Contains("tangential") && Contains("fixed"));
+    CHECK_THROWS_WITH(fickian("surface { a 1; }"), Contains("surface") && Contains("not a dictionary"));
+    CHECK_THROWS_WITH(fickian("coeficient 2;"), Contains("coefficient"));
 }
 
 

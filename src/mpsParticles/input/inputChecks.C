@@ -150,7 +150,11 @@ const Foam::dictionary* Foam::inputChecks::optionalDict
 }
 
 
-void Foam::inputChecks::value(const dictionary& dict, const word& key)
+const Foam::dictionary& Foam::inputChecks::value
+(
+    const dictionary& dict,
+    const word& key
+)
 {
     const entry* e = dict.findEntry(key, keyType::LITERAL);
     if (e && e->isDict())
@@ -159,15 +163,21 @@ void Foam::inputChecks::value(const dictionary& dict, const word& key)
             << "Entry '" << key << "' must be a value, not a dictionary"
             << " { ... }" << exit(FatalIOError);
     }
+    return dict;
 }
 
 
-void Foam::inputChecks::values(const dictionary& dict, const wordList& keys)
+const Foam::dictionary& Foam::inputChecks::values
+(
+    const dictionary& dict,
+    const wordList& keys
+)
 {
     for (const word& key : keys)
     {
         value(dict, key);
     }
+    return dict;
 }
 
 

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "freeSurfaceModel.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -30,7 +31,8 @@ Foam::scalar Foam::freeSurfaceModel::readFraction
     const scalar deflt
 ) const
 {
-    const scalar value = dict_.getOrDefault<scalar>(key, deflt);
+    const scalar value =
+        inputChecks::value(dict_, key).getOrDefault<scalar>(key, deflt);
     if (!(value > 0 && value <= 1))
     {
         FatalIOErrorInFunction(dict_)

@@ -46,7 +46,9 @@ Foam::freeSurfaceModels::improved::improved(const dictionary& dict)
     (
         wallTestTypeNames.getOrDefault
         (
-            "wallTest", dict, wallTestType::numberDensity
+            "wallTest",
+            inputChecks::value(dict, "wallTest"),
+            wallTestType::numberDensity
         )
     ),
     wallBeta_(readFraction("wallBeta", 0.97))

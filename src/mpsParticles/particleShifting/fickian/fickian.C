@@ -89,6 +89,31 @@ Foam::scalar Foam::particleShiftings::fickian::smallestEigenvalue
 }
 
 
+const Foam::dictionary& Foam::particleShiftings::fickian::checkEntries
+(
+    const dictionary& dict
+)
+{
+    inputChecks::keywords
+    (
+        dict,
+        {
+            "type", "diffusion", "surface", "coefficient", "maxShift",
+            "tensileCorrection", "tensileExponent"
+        },
+        "shifting fickian"
+    );
+    return inputChecks::values
+    (
+        dict,
+        {
+            "diffusion", "surface", "coefficient", "maxShift",
+            "tensileCorrection", "tensileExponent"
+        }
+    );
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleShiftings::fickian::fickian(const dictionary& dict)
@@ -96,7 +121,10 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
     particleShifting(dict),
     diffusion_
     (
-        diffusionTypeNames.getOrDefault("diffusion", dict, diffusionType::velocity)
+        diffusionTypeNames.getOrDefault
+        (
+            "diffusion", checkEntries(dict), diffusionType::velocity
+        )
     ),
     surface_
     (
@@ -113,20 +141,6 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
     R_(dict.getOrDefault<scalar>("tensileCorrection", 0.2)),
     exponent_(dict.getOrDefault<scalar>("tensileExponent", 4))
 {
-    inputChecks::keywords
-    (
-        dict,
-        {
-            "type", "diffusion", "surface", "coefficient", "maxShift",
-            "tensileCorrection", "tensileExponent"
-        },
-        "shifting fickian"
-    );
-    inputChecks::values
-    (
-        dict,
-        {"coefficient", "maxShift", "tensileCorrection", "tensileExponent"}
-    );
     // The fixed form diffuses explicitly: with this kernel it is stable at
     // A = 0.1 and unstable at 0.25 (the hydrostatic tank at l0 10 mm, dt
     // 5e-4 s, breaks up)
@@ -197,6 +211,10 @@ Foam::scalar Foam::particleShiftings::fickian::shift
             continue;
         }
 
+        // With d = x_j - x_i, grad_i W_ij = -W'(r) d/r points from i to j
+        // (W' < 0): grad C points into the fluid, where the neighbours
+        // are, and M = sum V grad_i W_ij d is symmetric positive definite
+        // (the identity on a full, regular neighbourhood)
         vector2D gradC(Zero), g(Zero);
         tensor2D M(Zero), Mf(Zero), S(Zero);
         bool nearSurface = surface[i];
@@ -220,15 +238,14 @@ Foam::scalar Foam::particleShiftings::fickian::shift
                 nearSurface = nearSurface || surface[j];
             }
         }
-        // With d = x_j - x_i, grad_i W_ij = -W'(r) d/r points from i to j
-        // (W' < 0): grad C points into the fluid, where the neighbours
-        // are, and M = sum V grad_i W_ij d is symmetric positive definite
-        // (the identity on a full, regular neighbourhood)
 
         if (nearSurface)
         {
             // Outward normal from the renormalised concentration gradient
-            vector2D nHat(smallestEigenvalue(M) > minEigenvalue ? (inv(M) & g) : g);
+            vector2D nHat
+            (
+                smallestEigenvalue(M) > minEigenvalue ? (inv(M) & g) : g
+            );
             const scalar magN = mag(nHat);
             if (magN > VSMALL)
             {
