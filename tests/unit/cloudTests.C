@@ -1,6 +1,7 @@
 /*---------------------------------------------------------------------------*\
     The particle cloud (mpsCloud): kinds kept in order, ids and fields kept
-    together through appending, removing and reordering; and the output
+    together through appending, removing, reordering and sending to
+    another cloud (the ranks' exchange); and the output
     round trip (lagrangian files written, then read back for a restart).
 \*---------------------------------------------------------------------------*/
 
@@ -15,6 +16,7 @@
 #include "OSspecific.H"
 #include "Time.H"
 #include "testTools.H"
+#include "StringStream.H"
 
 using namespace Foam;
 
@@ -127,6 +129,51 @@ TEST_CASE("cloud keeps kinds in order and ids with their fields")
         c.n()[c.index(14)] = 1400;
         c.x()[c.index(14)] = vector2D(0.14, 0);
         checkConsistent(c);
+    }
+
+    SECTION("particles sent through a stream arrive whole (ranks' exchange)")
+    {
+        // Another rank's cloud: a subset of the same particles
+        mpsCloud other(c);
+        List<bool> keepOther(other.size(), false);
+        keepOther[other.index(3)] = true;      // fluid
+        keepOther[other.index(0)] = true;      // structure
+        other.subset(keepOther);
+        REQUIRE(other.size() == 2);
+
+        // Send a structural, a wall, a fluid and a dummy particle
+        // out of kind order; the sender's cloud is untouched
+        const labelList sent
+        ({
+            c.index(1), c.index(9), c.index(12), c.index(7)
+        });
+        OStringStream os;
+        c.send(sent, os);
+        CHECK(c.size() == 14);
+
+        IStringStream is(os.str());
+        const labelList ids = other.receive(is);
+        CHECK(ids == labelList({1, 9, 12, 7}));
+        CHECK(other.size() == 6);
+        CHECK(other.count(particleKind::fluid) == 2);
+        CHECK(other.count(particleKind::wall) == 1);
+        CHECK(other.count(particleKind::dummy) == 1);
+        CHECK(other.count(particleKind::structure) == 2);
+        checkConsistent(other);
+        for (const label id : ids)
+        {
+            CHECK(other.region()[other.index(id)] == r);
+            CHECK(other.spacing()[other.index(id)] == 0.01);
+            CHECK_FALSE(other.halo()[other.index(id)]);
+        }
+
+        // An id already held is an error, not a second copy
+        OStringStream again;
+        c.send(labelList({c.index(3)}), again);
+        IStringStream isAgain(again.str());
+        FatalError.throwExceptions();
+        CHECK_THROWS(other.receive(isAgain));
+        FatalError.dontThrowExceptions();
     }
 
     SECTION("a copy has a table of its own")

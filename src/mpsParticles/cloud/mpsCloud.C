@@ -58,6 +58,7 @@ void Foam::mpsCloud::addFields()
     addField(spacing_, word::null, false, all, scalar(0));
     addField(id_, "id", false, all, label(-1));
     addField(surface_, "freeSurface", false, fluidWall, false);
+    addField(halo_, word::null, false, all, false);
 }
 
 
@@ -118,6 +119,7 @@ Foam::mpsCloud::mpsCloud(const mpsCloud& cloud)
     spacing_(cloud.spacing_),
     id_(cloud.id_),
     surface_(cloud.surface_),
+    halo_(cloud.halo_),
     start_(cloud.start_),
     indexOfId_(cloud.indexOfId_),
     regionNames_(cloud.regionNames_)
@@ -137,6 +139,7 @@ Foam::mpsCloud::mpsCloud(mpsCloud&& cloud)
     spacing_(std::move(cloud.spacing_)),
     id_(std::move(cloud.id_)),
     surface_(std::move(cloud.surface_)),
+    halo_(std::move(cloud.halo_)),
     start_(cloud.start_),
     indexOfId_(std::move(cloud.indexOfId_)),
     regionNames_(std::move(cloud.regionNames_))
@@ -311,6 +314,61 @@ void Foam::mpsCloud::append
 void Foam::mpsCloud::subset(const UList<bool>& keep)
 {
     reorder(findIndices(keep, true));
+}
+
+
+void Foam::mpsCloud::send(const labelUList& index, Ostream& os) const
+{
+    for (const mpsCloudField& f : fields_)
+    {
+        f.send(index, os);
+    }
+}
+
+
+Foam::labelList Foam::mpsCloud::receive(Istream& is)
+{
+    const label n0 = size();
+    for (mpsCloudField& f : fields_)
+    {
+        f.receive(is);
+    }
+    const label n = x_.size(), nNew = n - n0;
+    if (id_.size() != n || kind_.size() != n || halo_.size() != n)
+    {
+        FatalErrorInFunction
+            << "Received " << nNew << " positions but "
+            << id_.size() - n0 << " ids, " << kind_.size() - n0
+            << " kinds: not what one send wrote" << exit(FatalError);
+    }
+
+    labelList ids(SubList<label>(id_, nNew, n0));
+    label idEnd = indexOfId_.size();
+    for (const label id : ids)
+    {
+        if (id < idEnd && indexOfId_[id] >= 0)
+        {
+            FatalErrorInFunction
+                << "Received particle id " << id << ", which this cloud"
+                << " already holds" << exit(FatalError);
+        }
+        idEnd = max(idEnd, id + 1);
+    }
+    indexOfId_.resize(idEnd, -1);
+
+    // The new particles go after the others of their kind
+    labelList order(identity(n));
+    std::stable_sort
+    (
+        order.begin(),
+        order.end(),
+        [this](const label a, const label b)
+        {
+            return int(kind_[a]) < int(kind_[b]);
+        }
+    );
+    reorder(order);
+    return ids;
 }
 
 
