@@ -22,6 +22,11 @@ Description
     cloud, and its neighbour count too. Repeated after every particle has
     moved by up to 0.9 l0 (a smooth field), so that particles change rank
     (those that leave the mesh are removed, as the solver does).
+    Then a pressure-like system over the fluid and wall particles (the MPS
+    Laplacian's weights, a mass term n0/10 for a unique answer, the other
+    kinds as p = 0 neighbours), numbered by rank with the halos' global
+    rows from updateHalos, solved by BoomerAMG across the ranks, must give
+    the serial solution to within the solver's tolerance.
     Prints "passed" or what failed; the exit status says the same.
     -haloWidth <factor> sets the halo width to that many kernel radii
     (default 1): below 1 the check must fail (the case test shows it does).
@@ -37,6 +42,8 @@ Description
 #include "neighbourList.H"
 #include "particleGenerator.H"
 #include "mpsStructure.H"
+#include "pressureSolver.H"
+#include "globalIndex.H"
 
 using namespace Foam;
 
@@ -158,6 +165,146 @@ label check
 }
 
 
+// The test system: rows of the particles with row >= 0 that are not halos
+// (row - rowStart locally), columns their neighbours' rows
+void assemble
+(
+    const mpsCloud& c,
+    const labelUList& row,
+    const label nRows,
+    const label rowStart,
+    const label nCols,
+    const scalar re,
+    const scalar n0,
+    ppeMatrix& A,
+    Eigen::VectorXd& b
+)
+{
+    const UList<vector2D>& x = c.x();
+    const neighbourList nbrs(x, re);
+    std::vector<Eigen::Triplet<double>> t;
+    b.resize(nRows);
+    forAll(x, i)
+    {
+        if (c.halo()[i] || row[i] < 0)
+        {
+            continue;
+        }
+        const label r = row[i] - rowStart;
+        scalar diag = 0.1*n0;
+        for (const label j : nbrs[i])
+        {
+            const scalar w = re/mag(x[j] - x[i]) - 1;
+            diag += w;
+            if (row[j] >= 0)
+            {
+                t.emplace_back(r, row[j], -w);
+            }
+        }
+        t.emplace_back(r, row[i], diag);
+        b[r] = ::sin(9*x[i].x()) + ::cos(7*x[i].y());
+    }
+    A.resize(nRows, nCols);
+    A.setFromTriplets(t.begin(), t.end());
+}
+
+
+// The system over the ranks against the serial one; returns failures
+label checkPressure
+(
+    const mpsCloud& full,
+    const mpsCloud& local,
+    const mpsDecomposition& decomposition,
+    const scalar re,
+    const scalar n0
+)
+{
+    auto unknown = [](const particleKind k)
+    {
+        return k == particleKind::fluid || k == particleKind::wall;
+    };
+    dictionary dict;
+    dict.add
+    (
+        "pressureSolver",
+        dictionary(IStringStream
+        (
+            "type BoomerAMG; tolerance 1e-10; maxIter 200;"
+        )())
+    );
+
+    // Serial, on every rank alone
+    labelList rowFull(full.size(), -1);
+    label nFull = 0;
+    forAll(rowFull, i)
+    {
+        if (unknown(full.kind()[i]))
+        {
+            rowFull[i] = nFull++;
+        }
+    }
+    ppeMatrix A;
+    Eigen::VectorXd b;
+    assemble(full, rowFull, nFull, 0, nFull, re, n0, A, b);
+    Eigen::VectorXd pRef = Eigen::VectorXd::Zero(nFull);
+    autoPtr<pressureSolver> serial(pressureSolver::New(dict));
+    serial->solve(A, b, pRef);
+
+    // Across the ranks: owned rows numbered rank by rank, halos' rows
+    // from their owners
+    label nMine = 0;
+    forAll(local.x(), i)
+    {
+        nMine += (!local.halo()[i] && unknown(local.kind()[i]));
+    }
+    const globalIndex rows(nMine);
+    labelList row(local.size(), -1);
+    label next = rows.offset(Pstream::myProcNo());
+    forAll(row, i)
+    {
+        if (!local.halo()[i] && unknown(local.kind()[i]))
+        {
+            row[i] = next++;
+        }
+    }
+    decomposition.updateHalos(local, row);
+
+    assemble
+    (
+        local, row, nMine, rows.offset(Pstream::myProcNo()), rows.size(),
+        re, n0, A, b
+    );
+    Eigen::VectorXd p = Eigen::VectorXd::Zero(nMine);
+    autoPtr<pressureSolver> parallel(pressureSolver::New(dict));
+    const pressureSolver::performance perf =
+        parallel->solve(A, b, p, rows.offset(Pstream::myProcNo()));
+
+    scalar maxError = 0;
+    forAll(row, i)
+    {
+        if (row[i] >= 0 && !local.halo()[i])
+        {
+            const scalar ref = pRef[rowFull[full.index(local.id()[i])]];
+            maxError = max(maxError, mag(p[row[i] - rows.offset(Pstream::myProcNo())] - ref));
+        }
+    }
+    reduce(maxError, maxOp<scalar>());
+    const scalar scale = pRef.cwiseAbs().maxCoeff();
+    Info<< "pressure: " << rows.size() << " unknowns on "
+        << Pstream::nProcs() << " ranks (" << perf.iterations
+        << " iterations, residual " << perf.residual << "); max |p - p_serial|"
+        << "/max |p_serial| " << maxError/scale << endl;
+    if (rows.size() != nFull || !perf.converged || !(maxError <= 1e-7*scale))
+    {
+        Info<< "FAILED: the system across the ranks is not the serial one"
+            << " (" << rows.size() << " against " << nFull << " unknowns;"
+            << " difference above 1e-7 of the largest value)" << endl;
+        return 1;
+    }
+    return 0;
+}
+
+
 int main(int argc, char *argv[])
 {
     argList::addNote
@@ -221,7 +368,7 @@ int main(int argc, char *argv[])
         local.subset(keep);
     }
 
-    const mpsDecomposition decomposition
+    mpsDecomposition decomposition
     (
         mesh, args.getOrDefault<scalar>("haloWidth", 1)*re
     );
@@ -257,6 +404,7 @@ int main(int argc, char *argv[])
     }
     decomposition.addHalos(local);
     failures += check("moved", full, local, decomposition, re, n0);
+    failures += checkPressure(full, local, decomposition, re, n0);
 
     Info<< (failures ? "FAILED" : "passed") << nl << endl;
     return failures ? 1 : 0;

@@ -33,7 +33,7 @@ void Foam::mpsDecomposition::binRange
 }
 
 
-Foam::labelList Foam::mpsDecomposition::exchange
+Foam::List<Foam::labelList> Foam::mpsDecomposition::exchange
 (
     mpsCloud& cloud,
     const List<DynamicList<label>>& sendLists,
@@ -54,16 +54,16 @@ Foam::labelList Foam::mpsDecomposition::exchange
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
 
-    DynamicList<label> received;
+    List<labelList> received(Pstream::nProcs());
     forAll(recvSizes, proci)
     {
         if (proci != Pstream::myProcNo() && recvSizes[proci])
         {
             UIPstream is(proci, buffers);
-            received.append(cloud.receive(is));
+            received[proci] = cloud.receive(is);
         }
     }
-    return labelList(std::move(received));
+    return received;
 }
 
 
@@ -295,9 +295,11 @@ void Foam::mpsDecomposition::removeHalos(mpsCloud& cloud)
 }
 
 
-Foam::label Foam::mpsDecomposition::addHalos(mpsCloud& cloud) const
+Foam::label Foam::mpsDecomposition::addHalos(mpsCloud& cloud)
 {
     removeHalos(cloud);
+    haloSendIds_.clear();
+    haloRecvIds_.clear();
     if (!Pstream::parRun())
     {
         return 0;
@@ -313,15 +315,24 @@ Foam::label Foam::mpsDecomposition::addHalos(mpsCloud& cloud) const
             sendLists[rank].append(i);
         }
     }
-    const labelList ids =
-        exchange(cloud, sendLists, boolList(cloud.size(), true));
+    haloSendIds_.setSize(Pstream::nProcs());
+    forAll(sendLists, proci)
+    {
+        haloSendIds_[proci] = UIndirectList<label>(cloud.id(), sendLists[proci]);
+    }
+    haloRecvIds_ = exchange(cloud, sendLists, boolList(cloud.size(), true));
 
     UList<bool>& halo = cloud.halo();
-    for (const label id : ids)
+    label nHalos = 0;
+    for (const labelList& ids : haloRecvIds_)
     {
-        halo[cloud.index(id)] = true;
+        for (const label id : ids)
+        {
+            halo[cloud.index(id)] = true;
+        }
+        nHalos += ids.size();
     }
-    return ids.size();
+    return nHalos;
 }
 
 

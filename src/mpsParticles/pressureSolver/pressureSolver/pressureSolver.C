@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "pressureSolver.H"
+#include "Pstream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -42,6 +43,27 @@ Foam::pressureSolver::pressureSolver(const dictionary& dict)
             << "Entry 'maxIter' must be at least 1, got " << maxIter_
             << exit(FatalIOError);
     }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::pressureSolver::performance Foam::pressureSolver::solve
+(
+    const ppeMatrix& A,
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& p,
+    const label rowStart
+)
+{
+    if (Pstream::parRun() && Pstream::nProcs() > 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "pressureSolver " << dict_.get<word>("type")
+            << " solves on one rank; under -parallel use type BoomerAMG"
+            << exit(FatalIOError);
+    }
+    return solve(A, b, p);
 }
 
 
