@@ -167,6 +167,13 @@ TEST_CASE("cloud keeps kinds in order and ids with their fields")
             CHECK_FALSE(other.halo()[other.index(id)]);
         }
 
+        // Into an empty cloud, ids beyond any it knew (in any order)
+        mpsCloud empty;
+        IStringStream isEmpty(os.str());
+        CHECK(empty.receive(isEmpty) == labelList({1, 9, 12, 7}));
+        CHECK(empty.size() == 4);
+        checkConsistent(empty);
+
         // An id already held is an error, not a second copy
         OStringStream again;
         c.send(labelList({c.index(3)}), again);

@@ -343,10 +343,11 @@ Foam::labelList Foam::mpsCloud::receive(Istream& is)
     }
 
     labelList ids(SubList<label>(id_, nNew, n0));
-    label idEnd = indexOfId_.size();
+    const label known = indexOfId_.size();
+    label idEnd = known;
     for (const label id : ids)
     {
-        if (id < idEnd && indexOfId_[id] >= 0)
+        if (id < known && indexOfId_[id] >= 0)
         {
             FatalErrorInFunction
                 << "Received particle id " << id << ", which this cloud"
