@@ -12,6 +12,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsFluid.H"
+#include "globalIndex.H"
+#include "Map.H"
 #include "clockValue.H"
 #include "inputChecks.H"
 #include <omp.h>
@@ -152,6 +154,7 @@ void Foam::mpsFluid::updateNumberDensity()
         }
         n[i] = ni;
     }
+    syncHalos(n);
 }
 
 
@@ -174,6 +177,8 @@ void Foam::mpsFluid::predict(const scalar dt)
             x[i] += dt*U[i];
         }
     }
+    syncHalos(U);
+    syncHalos(x);
 }
 
 
@@ -187,6 +192,8 @@ Foam::label Foam::mpsFluid::setUnknowns()
     // a surface particle's row is p_i = 0 (scaled like an interior row), so
     // that the matrix keeps its size while particles reach or leave the
     // surface (a multigrid hierarchy can then serve several steps)
+    // (under -parallel this rank's particles only, numbered after the
+    // rows of the ranks before it; the halos' rows are their owners')
     unknown_.setSize(nPart);
     label nUnknowns = 0;
     label nSolved = 0;
@@ -195,14 +202,31 @@ Foam::label Foam::mpsFluid::setUnknowns()
         const bool inPPE =
             (kind[i] == particleKind::fluid || kind[i] == particleKind::wall);
         const bool zero = zeroRow(i);
-        unknown_[i] = inPPE ? nUnknowns++ : -1;
+        unknown_[i] = (inPPE && owned(i)) ? nUnknowns++ : -1;
         if (!inPPE || zero)
         {
             p[i] = 0;
         }
-        nSolved += (inPPE && !zero);
+        nSolved += (inPPE && !zero && owned(i));
     }
     info_.nUnknowns = nSolved;
+
+    rowStart_ = 0;
+    nGlobalRows_ = nUnknowns;
+    if (decomposition_)
+    {
+        const globalIndex rows(nUnknowns);
+        rowStart_ = rows.offset(Pstream::myProcNo());
+        nGlobalRows_ = rows.size();
+        for (label& row : unknown_)
+        {
+            if (row >= 0)
+            {
+                row += rowStart_;
+            }
+        }
+        syncHalos(unknown_);
+    }
 
     return nUnknowns;
 }
@@ -261,15 +285,16 @@ void Foam::mpsFluid::assemblePressure
             kind[j] != particleKind::dummy
          && unknown_[j] >= 0 && !zeroRow(j);
     };
+    // (rows: this rank's, from rowStart_; columns: global row numbers)
     ppeMatrix::StorageIndex* outer = A.outerIndexPtr();
     outer[0] = 0;
     for (label i = 0; i < nPart; ++i)
     {
-        const label row = unknown_[i];
-        if (row < 0)
+        if (unknown_[i] < 0 || !owned(i))
         {
             continue;
         }
+        const label row = unknown_[i] - rowStart_;
         label nnz = 1;
         if (!zeroRow(i))
         {
@@ -290,15 +315,15 @@ void Foam::mpsFluid::assemblePressure
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < nPart; ++i)
     {
-        const label row = unknown_[i];
-        if (row < 0)
+        if (unknown_[i] < 0 || !owned(i))
         {
             continue;
         }
+        const label row = unknown_[i] - rowStart_;
         const label start = outer[row];
         if (zeroRow(i))
         {
-            cols[start] = row;
+            cols[start] = unknown_[i];
             vals[start] = surfaceDiag;
             b[row] = 0;
             sol[row] = 0;
@@ -339,7 +364,7 @@ void Foam::mpsFluid::assemblePressure
             // diagonal, and varies continuously as neighbours come and go
             diag += airFactor*lapCoeff*max(n0L_ - nL, scalar(0));
         }
-        cols[e] = row;
+        cols[e] = unknown_[i];
         vals[e] = diag;
         ++e;
 
@@ -440,7 +465,7 @@ const Foam::labelList& Foam::mpsFluid::pressureSystem
 )
 {
     const label nUnknowns = setUnknowns();
-    A.resize(nUnknowns, nUnknowns);
+    A.resize(nUnknowns, nGlobalRows_);
     b.resize(nUnknowns);
     sol.resize(nUnknowns);
     assemblePressure(dt, A, b, sol);
@@ -457,12 +482,22 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
 
     // The relative residual |b - A p|/|b| of the last step's pressure (the
     // log's initial residual; the solvers' final one is the same measure)
-    const scalar bNorm = b.norm();
-    info_.ppeInitialResidual =
-        bNorm > 0 ? (b - A*sol).norm()/bNorm : scalar(0);
+    if (decomposition_)
+    {
+        info_.ppeInitialResidual = parallelResidual(A, b, sol);
+    }
+    else
+    {
+        const scalar bNorm = b.norm();
+        info_.ppeInitialResidual =
+            bNorm > 0 ? (b - A*sol).norm()/bNorm : scalar(0);
+    }
 
     clockValue solveClock(true);
-    const pressureSolver::performance perf = solver_->solve(A, b, sol);
+    const pressureSolver::performance perf =
+        decomposition_
+      ? solver_->solve(A, b, sol, rowStart_)
+      : solver_->solve(A, b, sol);
     lastSolveTime_ = solveClock.elapsed();
     info_.ppeIterations = perf.iterations;
     info_.totalPpeIterations += perf.iterations;
@@ -476,12 +511,13 @@ void Foam::mpsFluid::solvePressure(const scalar dt)
     const label nPart = cloud_.size();
     for (label i = 0; i < nPart; ++i)
     {
-        const label row = unknown_[i];
-        if (row >= 0 && !zeroRow(i))
+        const label row = unknown_[i] - rowStart_;
+        if (unknown_[i] >= 0 && owned(i) && !zeroRow(i))
         {
             p[i] = (clampNegative_ && sol[row] < 0) ? 0 : sol[row];
         }
     }
+    syncHalos(p);
 }
 
 
@@ -493,6 +529,7 @@ void Foam::mpsFluid::correct(const scalar dt)
     const label n = cloud_.size();
 
     gradient_->gradient(cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_);
+    syncHalos(gradP_);
 
     scalar maxSpeed2 = 0;
 
@@ -506,6 +543,12 @@ void Foam::mpsFluid::correct(const scalar dt)
             x[i] += dt*dU;
             maxSpeed2 = max(maxSpeed2, magSqr(U[i]));
         }
+    }
+    syncHalos(U);
+    syncHalos(x);
+    if (decomposition_)
+    {
+        reduce(maxSpeed2, maxOp<scalar>());
     }
     info_.maxSpeed = ::sqrt(maxSpeed2);
 }
@@ -522,6 +565,7 @@ Foam::label Foam::mpsFluid::removeOutside()
         if
         (
             kind[i] == particleKind::fluid
+         && owned(i)
          && (
                 x[i].x() < domain_.min().x() || x[i].x() > domain_.max().x()
              || x[i].y() < domain_.min().y() || x[i].y() > domain_.max().y()
@@ -555,6 +599,10 @@ bool Foam::mpsFluid::allFinite() const
             && std::isfinite(U[i].x()) && std::isfinite(U[i].y())
             && std::isfinite(p[i]);
     }
+    if (decomposition_)
+    {
+        reduce(finite, andOp<bool>());
+    }
     return finite;
 }
 
@@ -583,7 +631,10 @@ Foam::mpsFluid::mpsFluid
     fillVoids_(false),
     clampNegative_(true),
     domain_(domain),
-    lastSolveTime_(0)
+    lastSolveTime_(0),
+    decomposition_(nullptr),
+    rowStart_(0),
+    nGlobalRows_(0)
 {
     if (nu_ < 0)
     {
@@ -705,6 +756,77 @@ void Foam::mpsFluid::evaluate()
     (
         cloud_, nbrs_, wN_, n0N_, F0_, cloud_.surface()
     );
+    syncHalos(cloud_.surface());
+}
+
+
+Foam::scalar Foam::mpsFluid::interactionRadius() const
+{
+    return max(max(kN_->re(), kG_->re()), max(kL_->re(), kV_->re()));
+}
+
+
+void Foam::mpsFluid::setDecomposition(mpsDecomposition& decomposition)
+{
+    decomposition_ = &decomposition;
+    redistribute();
+}
+
+
+void Foam::mpsFluid::redistribute()
+{
+    if (decomposition_)
+    {
+        mpsDecomposition::removeHalos(cloud_);
+        decomposition_->distribute(cloud_);
+        decomposition_->addHalos(cloud_);
+    }
+}
+
+
+Foam::scalar Foam::mpsFluid::parallelResidual
+(
+    const ppeMatrix& A,
+    const Eigen::VectorXd& b,
+    const Eigen::VectorXd& sol
+) const
+{
+    // |b - A p|/|b| over the ranks: the columns of other ranks' rows take
+    // the pressures of the halos (zeroed where the owner zeroed them)
+    Map<scalar> haloP;
+    const UList<scalar>& p = cloud_.p();
+    forAll(unknown_, i)
+    {
+        if (unknown_[i] >= 0 && !owned(i))
+        {
+            haloP.set(unknown_[i], p[i]);
+        }
+    }
+    scalar r2 = 0, b2 = 0;
+    for (label row = 0; row < A.rows(); ++row)
+    {
+        scalar Ap = 0;
+        for
+        (
+            label k = A.outerIndexPtr()[row];
+            k < A.outerIndexPtr()[row + 1];
+            ++k
+        )
+        {
+            const label col = A.innerIndexPtr()[k];
+            const label local = col - rowStart_;
+            Ap += A.valuePtr()[k]
+               *(
+                    (local >= 0 && local < sol.size())
+                  ? sol[local] : haloP.lookup(col, 0)
+                );
+        }
+        r2 += sqr(b[row] - Ap);
+        b2 += sqr(b[row]);
+    }
+    reduce(r2, sumOp<scalar>());
+    reduce(b2, sumOp<scalar>());
+    return b2 > 0 ? ::sqrt(r2/b2) : scalar(0);
 }
 
 
@@ -721,7 +843,13 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
 
 bool Foam::mpsFluid::beginStep(const scalar dt)
 {
-    if (!cloud_.count(particleKind::fluid))
+    label nFluid = cloud_.count(particleKind::fluid);
+    if (decomposition_)
+    {
+        // (a rank without fluid still takes part in the step's exchanges)
+        reduce(nFluid, sumOp<label>());
+    }
+    if (!nFluid)
     {
         // A structure alone: nothing to do
         return false;
@@ -735,6 +863,7 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
     };
 
     ++info_.nSteps;
+    redistribute();
     predict(dt);
     lap(info_.timeRest);
 
@@ -742,6 +871,8 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
     (
         cloud_, nbrsV_, l0_, dt, cloud_.x(), cloud_.U()
     );
+    syncHalos(cloud_.U());
+    syncHalos(cloud_.x());
     info_.finite = allFinite();
     if (!info_.finite)
     {
@@ -750,6 +881,11 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
     }
     info_.nRemoved = removeOutside();
     info_.totalRemoved += info_.nRemoved;
+    if (decomposition_ && returnReduce(info_.nRemoved > 0, orOp<bool>()))
+    {
+        // Halos of particles removed on their rank would refresh no more
+        redistribute();
+    }
     lap(info_.timeRest);
 
     updateNeighbours();
@@ -760,10 +896,11 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
     (
         cloud_, nbrs_, wN_, n0N_, F0_, cloud_.surface()
     );
+    syncHalos(cloud_.surface());
     info_.nSurface = 0;
-    for (const bool s : cloud_.surface())
+    forAll(cloud_.surface(), i)
     {
-        info_.nSurface += s;
+        info_.nSurface += (cloud_.surface()[i] && owned(i));
     }
     lap(info_.timeRest);
     return true;
@@ -788,17 +925,27 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
     const label nLeft = removeOutside();
     info_.nRemoved += nLeft;
     info_.totalRemoved += nLeft;
-    if (nLeft)
+    const bool anyLeft =
+        decomposition_ ? returnReduce(nLeft > 0, orOp<bool>()) : nLeft > 0;
+    if (anyLeft)
     {
         // The pairs and gradients that fluidPressureAt reads belong to
         // the particles before the removal: rebuilt for those that remain
+        redistribute();
         updateNeighbours();
         gradient_->gradient
         (
             cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_
         );
+        syncHalos(gradP_);
     }
     info_.maxShift = shifting_->shift(cloud_, nbrs_, l0_, kN_->re(), dt);
+    syncHalos(cloud_.x());
+    syncHalos(cloud_.U());
+    if (decomposition_)
+    {
+        reduce(info_.maxShift, maxOp<scalar>());
+    }
     info_.timeRest += clock.elapsed();
 
     return info_;
