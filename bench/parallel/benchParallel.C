@@ -39,8 +39,7 @@ Description
 #include "neighbourList.H"
 #include "particleGenerator.H"
 #include "mpsStructure.H"
-#include "pressureSolver.H"
-#include "globalIndex.H"
+#include "laplacianSystem.H"
 #include "clockValue.H"
 #include <omp.h>
 
@@ -130,57 +129,19 @@ int main(int argc, char *argv[])
         nbrs.build(cloud.x(), re);
         lap(tNeighbours);
 
-        auto unknown = [&](const label i)
-        {
-            const particleKind k = cloud.kind()[i];
-            return k == particleKind::fluid || k == particleKind::wall;
-        };
-        label nMine = 0;
-        forAll(cloud.x(), i)
-        {
-            nMine += (!cloud.halo()[i] && unknown(i));
-        }
-        const globalIndex rows(nMine);
+        labelList row;
+        const globalIndex rows(numberRows(cloud, decomposition, row));
+        const label nMine = rows.localSize();
         const label rowStart = rows.offset(Pstream::myProcNo());
-        labelList row(cloud.size(), -1);
-        label next = rowStart;
-        forAll(row, i)
-        {
-            if (!cloud.halo()[i] && unknown(i))
-            {
-                row[i] = next++;
-            }
-        }
-        decomposition.updateHalos(cloud, row);
         lap(tRows);
 
-        std::vector<Eigen::Triplet<double>> trip;
-        trip.reserve(20*nMine);
-        Eigen::VectorXd b(nMine);
-        const UList<vector2D>& xc = cloud.x();
-        const scalar n0 = 6.5;
-        forAll(xc, i)
-        {
-            if (cloud.halo()[i] || row[i] < 0)
-            {
-                continue;
-            }
-            const label r = row[i] - rowStart;
-            scalar diag = 0.01*n0;
-            for (const label j : nbrs[i])
-            {
-                const scalar w = re/mag(xc[j] - xc[i]) - 1;
-                diag += w;
-                if (row[j] >= 0)
-                {
-                    trip.emplace_back(r, row[j], -w);
-                }
-            }
-            trip.emplace_back(r, row[i], diag);
-            b[r] = ::sin(9*xc[i].x()) + ::cos(7*xc[i].y());
-        }
-        ppeMatrix A(nMine, rows.size());
-        A.setFromTriplets(trip.begin(), trip.end());
+        ppeMatrix A;
+        Eigen::VectorXd b;
+        assemble
+        (
+            cloud, nbrs, row, rowStart, nMine, rows.size(), re, 0.01*6.5,
+            A, b
+        );
         lap(tAssembly);
 
         Eigen::VectorXd p = Eigen::VectorXd::Zero(nMine);

@@ -42,8 +42,7 @@ Description
 #include "neighbourList.H"
 #include "particleGenerator.H"
 #include "mpsStructure.H"
-#include "pressureSolver.H"
-#include "globalIndex.H"
+#include "laplacianSystem.H"
 
 using namespace Foam;
 
@@ -165,50 +164,6 @@ label check
 }
 
 
-// The test system: rows of the particles with row >= 0 that are not halos
-// (row - rowStart locally), columns their neighbours' rows
-void assemble
-(
-    const mpsCloud& c,
-    const labelUList& row,
-    const label nRows,
-    const label rowStart,
-    const label nCols,
-    const scalar re,
-    const scalar n0,
-    ppeMatrix& A,
-    Eigen::VectorXd& b
-)
-{
-    const UList<vector2D>& x = c.x();
-    const neighbourList nbrs(x, re);
-    std::vector<Eigen::Triplet<double>> t;
-    b.resize(nRows);
-    forAll(x, i)
-    {
-        if (c.halo()[i] || row[i] < 0)
-        {
-            continue;
-        }
-        const label r = row[i] - rowStart;
-        scalar diag = 0.1*n0;
-        for (const label j : nbrs[i])
-        {
-            const scalar w = re/mag(x[j] - x[i]) - 1;
-            diag += w;
-            if (row[j] >= 0)
-            {
-                t.emplace_back(r, row[j], -w);
-            }
-        }
-        t.emplace_back(r, row[i], diag);
-        b[r] = ::sin(9*x[i].x()) + ::cos(7*x[i].y());
-    }
-    A.resize(nRows, nCols);
-    A.setFromTriplets(t.begin(), t.end());
-}
-
-
 // The system over the ranks against the serial one; returns failures
 label checkPressure
 (
@@ -245,34 +200,25 @@ label checkPressure
     }
     ppeMatrix A;
     Eigen::VectorXd b;
-    assemble(full, rowFull, nFull, 0, nFull, re, n0, A, b);
+    assemble
+    (
+        full, neighbourList(full.x(), re), rowFull, 0, nFull, nFull, re,
+        0.1*n0, A, b
+    );
     Eigen::VectorXd pRef = Eigen::VectorXd::Zero(nFull);
     autoPtr<pressureSolver> serial(pressureSolver::New(dict));
     serial->solve(A, b, pRef);
 
     // Across the ranks: owned rows numbered rank by rank, halos' rows
     // from their owners
-    label nMine = 0;
-    forAll(local.x(), i)
-    {
-        nMine += (!local.halo()[i] && unknown(local.kind()[i]));
-    }
-    const globalIndex rows(nMine);
-    labelList row(local.size(), -1);
-    label next = rows.offset(Pstream::myProcNo());
-    forAll(row, i)
-    {
-        if (!local.halo()[i] && unknown(local.kind()[i]))
-        {
-            row[i] = next++;
-        }
-    }
-    decomposition.updateHalos(local, row);
-
+    labelList row;
+    const globalIndex rows(numberRows(local, decomposition, row));
+    const label nMine = rows.localSize();
     assemble
     (
-        local, row, nMine, rows.offset(Pstream::myProcNo()), rows.size(),
-        re, n0, A, b
+        local, neighbourList(local.x(), re), row,
+        rows.offset(Pstream::myProcNo()), nMine, rows.size(), re, 0.1*n0,
+        A, b
     );
     Eigen::VectorXd p = Eigen::VectorXd::Zero(nMine);
     autoPtr<pressureSolver> parallel(pressureSolver::New(dict));
