@@ -181,27 +181,6 @@ Foam::mpsDecomposition::mpsDecomposition
             }
         }
     }
-
-    // The bins within haloWidth of another rank's cell
-    binNearOther_.setSize(nx_*ny_, false);
-    forAll(boxes_, bi)
-    {
-        if (boxRank_[bi] == Pstream::myProcNo())
-        {
-            continue;
-        }
-        const box& b = boxes_[bi];
-        label ilo, ihi, jlo, jhi;
-        binRange(b[0] - haloWidth_, b[2] + haloWidth_, x0_, nx_, ilo, ihi);
-        binRange(b[1] - haloWidth_, b[3] + haloWidth_, y0_, ny_, jlo, jhi);
-        for (label j = jlo; j <= jhi; ++j)
-        {
-            for (label i = ilo; i <= ihi; ++i)
-            {
-                binNearOther_[i + nx_*j] = true;
-            }
-        }
-    }
 }
 
 
@@ -240,20 +219,6 @@ void Foam::mpsDecomposition::nearRanks
 ) const
 {
     ranks.clear();
-    if (r <= haloWidth_)
-    {
-        // No other rank's cell within haloWidth of x's bin: none within r
-        const label i = label(floor((x.x() - x0_)/binSize_));
-        const label j = label(floor((x.y() - y0_)/binSize_));
-        if
-        (
-            i >= 0 && i < nx_ && j >= 0 && j < ny_
-         && !binNearOther_[i + nx_*j]
-        )
-        {
-            return;
-        }
-    }
     label ilo, ihi, jlo, jhi;
     binRange(x.x() - r, x.x() + r, x0_, nx_, ilo, ihi);
     binRange(x.y() - r, x.y() + r, y0_, ny_, jlo, jhi);
