@@ -49,7 +49,10 @@ Foam::List<Foam::labelList> Foam::mpsDecomposition::exchange
             cloud.send(sendLists[proci], os);
         }
     }
-    cloud.subset(keep);
+    if (keep.found(false))
+    {
+        cloud.subset(keep);
+    }
 
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
