@@ -88,7 +88,13 @@ int main(int argc, char *argv[])
     dict.add
     (
         "pressureSolver",
-        dictionary(IStringStream("type BoomerAMG; tolerance 1e-8; maxIter 200; reuse 1;")())
+        dictionary
+        (
+            IStringStream
+            (
+                "type BoomerAMG; tolerance 1e-8; maxIter 200; reuse 1;"
+            )()
+        )
     );
     autoPtr<pressureSolver> solver(pressureSolver::New(dict));
 

@@ -231,7 +231,8 @@ label checkPressure
         if (row[i] >= 0 && !local.halo()[i])
         {
             const scalar ref = pRef[rowFull[full.index(local.id()[i])]];
-            maxError = max(maxError, mag(p[row[i] - rows.offset(Pstream::myProcNo())] - ref));
+            const label r = row[i] - rows.offset(Pstream::myProcNo());
+            maxError = max(maxError, mag(p[r] - ref));
         }
     }
     reduce(maxError, maxOp<scalar>());
@@ -309,7 +310,8 @@ int main(int argc, char *argv[])
         boolList keep(local.size());
         forAll(keep, i)
         {
-            keep[i] = (local.id()[i] % Pstream::nProcs() == Pstream::myProcNo());
+            keep[i] =
+                (local.id()[i] % Pstream::nProcs() == Pstream::myProcNo());
         }
         local.subset(keep);
     }

@@ -321,7 +321,8 @@ Foam::label Foam::mpsDecomposition::addHalos(mpsCloud& cloud)
     haloSendIds_.setSize(Pstream::nProcs());
     forAll(sendLists, proci)
     {
-        haloSendIds_[proci] = UIndirectList<label>(cloud.id(), sendLists[proci]);
+        haloSendIds_[proci] =
+            UIndirectList<label>(cloud.id(), sendLists[proci]);
     }
     haloRecvIds_ = exchange(cloud, sendLists, boolList(cloud.size(), true));
 

@@ -227,7 +227,8 @@ Foam::pressureSolver::performance Foam::pressureSolvers::BoomerAMG::solve
             rows[i] = first + i;
             nCols[i] = A.outerIndexPtr()[i + 1] - A.outerIndexPtr()[i];
             nDiag[i] = 0;
-            for (HYPRE_Int k = A.outerIndexPtr()[i]; k < A.outerIndexPtr()[i + 1]; ++k)
+            const HYPRE_Int kEnd = A.outerIndexPtr()[i + 1];
+            for (HYPRE_Int k = A.outerIndexPtr()[i]; k < kEnd; ++k)
             {
                 const HYPRE_BigInt col = A.innerIndexPtr()[k];
                 nDiag[i] += (col >= first && col <= last);
