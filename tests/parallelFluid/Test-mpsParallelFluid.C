@@ -166,13 +166,13 @@ int main(int argc, char *argv[])
         reduce(dx, maxOp<scalar>());
         reduce(dU, maxOp<scalar>());
         reduce(dp, maxOp<scalar>());
-        label nIterations = serial.info().ppeIterations;
         Info<< "step " << step << " (t = " << step*dt << " s): "
             << nOwned << " owned of " << full.size() << " on "
             << Pstream::nProcs() << " ranks; max |x - x_serial|/l0 " << dx
             << ", |u - u_serial|/max|u| " << dU
             << ", |p - p_serial|/max|p| " << dp
-            << " (PPE iterations " << nIterations << " serial, "
+            << " (PPE iterations " << serial.info().ppeIterations
+            << " serial, "
             << parallel.info().ppeIterations << " parallel)" << endl;
         if (nOwned != full.size() || missing)
         {

@@ -177,8 +177,9 @@ void Foam::mpsFluid::predict(const scalar dt)
             x[i] += dt*U[i];
         }
     }
-    syncHalos(U);
-    syncHalos(x);
+    // (the halos' u*, x* are refreshed after the collisions: those read
+    // only pairs closer than l0, whose halo lies within the halo width
+    // less one viscosity radius of the border, its neighbourhood whole)
 }
 
 
@@ -546,10 +547,7 @@ void Foam::mpsFluid::correct(const scalar dt)
     }
     syncHalos(U);
     syncHalos(x);
-    if (decomposition_)
-    {
-        reduce(maxSpeed2, maxOp<scalar>());
-    }
+    reduceRanks(maxSpeed2, maxOp<scalar>());
     info_.maxSpeed = ::sqrt(maxSpeed2);
 }
 
@@ -599,10 +597,7 @@ bool Foam::mpsFluid::allFinite() const
             && std::isfinite(U[i].x()) && std::isfinite(U[i].y())
             && std::isfinite(p[i]);
     }
-    if (decomposition_)
-    {
-        reduce(finite, andOp<bool>());
-    }
+    reduceRanks(finite, andOp<bool>());
     return finite;
 }
 
@@ -843,12 +838,9 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::step(const scalar dt)
 
 bool Foam::mpsFluid::beginStep(const scalar dt)
 {
+    // (a rank without fluid still takes part in the step's exchanges)
     label nFluid = cloud_.count(particleKind::fluid);
-    if (decomposition_)
-    {
-        // (a rank without fluid still takes part in the step's exchanges)
-        reduce(nFluid, sumOp<label>());
-    }
+    reduceRanks(nFluid, sumOp<label>());
     if (!nFluid)
     {
         // A structure alone: nothing to do
@@ -881,7 +873,9 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
     }
     info_.nRemoved = removeOutside();
     info_.totalRemoved += info_.nRemoved;
-    if (decomposition_ && returnReduce(info_.nRemoved > 0, orOp<bool>()))
+    bool anyRemoved = info_.nRemoved > 0;
+    reduceRanks(anyRemoved, orOp<bool>());
+    if (decomposition_ && anyRemoved)
     {
         // Halos of particles removed on their rank would refresh no more
         redistribute();
@@ -925,8 +919,8 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
     const label nLeft = removeOutside();
     info_.nRemoved += nLeft;
     info_.totalRemoved += nLeft;
-    const bool anyLeft =
-        decomposition_ ? returnReduce(nLeft > 0, orOp<bool>()) : nLeft > 0;
+    bool anyLeft = nLeft > 0;
+    reduceRanks(anyLeft, orOp<bool>());
     if (anyLeft)
     {
         // The pairs and gradients that fluidPressureAt reads belong to
@@ -942,10 +936,7 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
     info_.maxShift = shifting_->shift(cloud_, nbrs_, l0_, kN_->re(), dt);
     syncHalos(cloud_.x());
     syncHalos(cloud_.U());
-    if (decomposition_)
-    {
-        reduce(info_.maxShift, maxOp<scalar>());
-    }
+    reduceRanks(info_.maxShift, maxOp<scalar>());
     info_.timeRest += clock.elapsed();
 
     return info_;
