@@ -33,6 +33,17 @@ Description
     controlDict: the usual time controls; adjustTimeStep (default no) with
     maxCo (default 0.2, Courant number |u| dt/l0) and maxDeltaT.
 
+    Parallel: decomposePar (system/decomposeParDict: the background mesh's
+    decomposition, method simple, hierarchical or manual), then
+    mpirun -np N mpsFsiFoam -parallel, then reconstructPar. Every rank
+    generates the particles and keeps those in its cells; the fluid's
+    particles, wall and dummy ones move between ranks and are exchanged as
+    halos (mpsDecomposition); the pressure is solved across the ranks
+    (pressureSolver BoomerAMG); the structure is replicated on every rank,
+    under the interface forces summed over the ranks. Each rank writes
+    processor<N>/<time>/lagrangian/<cloud>; a restart (startFrom
+    latestTime) reads them back.
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -42,6 +53,7 @@ Description
 #include "mpsCloudOutput.H"
 #include "lagrangianCloudReader.H"
 #include "mpsFluid.H"
+#include "mpsDecomposition.H"
 #include "mpsState.H"
 #include "mpsStructure.H"
 #include "fluidStructureInterface.H"
@@ -60,10 +72,10 @@ int main(int argc, char *argv[])
         "Hydroelastic slamming (elastic wedge entry) with an improved MPS"
         " method: particle fluid, particle structure, sub-cycled coupling."
     );
-    argList::noParallel();
     setEnv("FOAM_SIGFPE", "false", true);
 
     #include "setRootCaseLists.H"
+    #include "checkDecomposeParDict.H"
     #include "checkControlDict.H"
     #include "checkLatestTime.H"
     #include "createTime.H"
@@ -105,6 +117,8 @@ int main(int argc, char *argv[])
         runTime.write();
         if (runTime.writeTime())
         {
+            // (under -parallel each rank writes the particles in its cells)
+            fluid.localise();
             output.write(cloud);
             lastWritten = runTime.timeName();
         }

@@ -779,6 +779,23 @@ void Foam::mpsFluid::redistribute()
 }
 
 
+void Foam::mpsFluid::localise()
+{
+    if (decomposition_)
+    {
+        // The pairs and gradients that fluidPressureAt reads follow the
+        // particles to their ranks
+        redistribute();
+        updateNeighbours();
+        gradient_->gradient
+        (
+            cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_
+        );
+        syncHalos(gradP_);
+    }
+}
+
+
 Foam::scalar Foam::mpsFluid::parallelResidual
 (
     const ppeMatrix& A,
@@ -871,11 +888,12 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
         // Nothing more can be computed from non-finite positions
         return false;
     }
+    // (counts of the step are those of all ranks)
+    reduceRanks(info_.nCollisions, sumOp<label>());
     info_.nRemoved = removeOutside();
+    reduceRanks(info_.nRemoved, sumOp<label>());
     info_.totalRemoved += info_.nRemoved;
-    bool anyRemoved = info_.nRemoved > 0;
-    reduceRanks(anyRemoved, orOp<bool>());
-    if (decomposition_ && anyRemoved)
+    if (decomposition_ && info_.nRemoved > 0)
     {
         // Halos of particles removed on their rank would refresh no more
         redistribute();
@@ -896,6 +914,7 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
     {
         info_.nSurface += (cloud_.surface()[i] && owned(i));
     }
+    reduceRanks(info_.nSurface, sumOp<label>());
     lap(info_.timeRest);
     return true;
 }
@@ -916,12 +935,11 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
     clockValue clock(true);
     correct(dt);
     info_.finite = allFinite() && std::isfinite(info_.ppeResidual);
-    const label nLeft = removeOutside();
+    label nLeft = removeOutside();
+    reduceRanks(nLeft, sumOp<label>());
     info_.nRemoved += nLeft;
     info_.totalRemoved += nLeft;
-    bool anyLeft = nLeft > 0;
-    reduceRanks(anyLeft, orOp<bool>());
-    if (anyLeft)
+    if (nLeft > 0)
     {
         // The pairs and gradients that fluidPressureAt reads belong to
         // the particles before the removal: rebuilt for those that remain

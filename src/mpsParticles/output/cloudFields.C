@@ -16,7 +16,12 @@ License
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFields::cloudFields(const word& name, const mpsCloud& cloud)
+Foam::cloudFields::cloudFields
+(
+    const word& name,
+    const mpsCloud& cloud,
+    const UList<bool>& written
+)
 :
     name_(name),
     regionNames_(cloud.regionNames())
@@ -24,7 +29,11 @@ Foam::cloudFields::cloudFields(const word& name, const mpsCloud& cloud)
     DynamicList<label> ids;
     forAll(cloud.kind(), i)
     {
-        if (outputClouds::holds(name, cloud.kind()[i]))
+        if
+        (
+            outputClouds::holds(name, cloud.kind()[i])
+         && (written.empty() || written[i])
+        )
         {
             ids.append(i);
         }

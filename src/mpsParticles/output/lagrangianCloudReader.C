@@ -17,6 +17,7 @@ License
 #include "IOField.H"
 #include "IFstream.H"
 #include "Time.H"
+#include "mpsDecomposition.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -24,7 +25,8 @@ void Foam::lagrangianCloudReader::readCloud
 (
     const word& cloudName,
     mpsCloud& cloud,
-    List<bool>& found
+    List<bool>& found,
+    DynamicList<label>& order
 ) const
 {
     const fileName local(cloud::prefix/cloudName);
@@ -72,9 +74,16 @@ void Foam::lagrangianCloudReader::readCloud
                 << " particleDict changed since the run started?"
                 << exit(FatalIOError);
         }
+        if (found[i])
+        {
+            FatalIOErrorInFunction(is)
+                << "Particle id " << id[k] << " of cloud " << cloudName
+                << " is written twice" << exit(FatalIOError);
+        }
         cloud.x()[i] = vector2D(x.x(), x.y());
         index[k] = i;
         found[i] = true;
+        order.append(i);
     }
     is.readEnd("positions");
 
@@ -181,22 +190,62 @@ void Foam::lagrangianCloudReader::checkComplete(const mpsCloud& cloud) const
 void Foam::lagrangianCloudReader::read(mpsCloud& cloud) const
 {
     List<bool> found(cloud.size(), false);
+    DynamicList<label> order(cloud.size());
     for (const word& c : outputClouds::names())
     {
-        readCloud(c, cloud, found);
+        readCloud(c, cloud, found, order);
     }
 
+    // Under -parallel each rank read the particles it wrote, and holds
+    // all of the replicated kinds (the structure reads its state itself)
+    const bool par = Pstream::parRun();
     label nMissing = 0;
-    for (const bool f : found)
+    forAll(found, i)
     {
-        nMissing += !f;
+        if (par && mpsDecomposition::replicated(cloud.kind()[i]))
+        {
+            found[i] = true;
+        }
+        else if (par)
+        {
+            // Counted once (every rank generated every particle)
+            nMissing += (Pstream::master() ? 1 : 0) - found[i];
+        }
+        else
+        {
+            nMissing += !found[i];
+        }
     }
+    reduce(nMissing, sumOp<label>());
     if (nMissing)
     {
         Info<< "    " << nMissing << " generated particles are not in the"
             << " written clouds (they had left the domain): removed" << nl;
-        cloud.subset(found);
     }
+
+    // The particles in the order they were written (the clouds' order is
+    // the kinds'), so that the run continues with the sums over neighbours
+    // in the order the written run had them: a restart continues exactly;
+    // the replicated kinds in the generated order, as they always are
+    DynamicList<label> from(order.size());
+    for (const label i : order)
+    {
+        if (!par || !mpsDecomposition::replicated(cloud.kind()[i]))
+        {
+            from.append(i);
+        }
+    }
+    if (par)
+    {
+        forAll(found, i)
+        {
+            if (mpsDecomposition::replicated(cloud.kind()[i]))
+            {
+                from.append(i);
+            }
+        }
+    }
+    cloud.reorder(from);
 }
 
 

@@ -17,6 +17,7 @@ License
 #include "IOdictionary.H"
 #include "OFstream.H"
 #include "Time.H"
+#include "Pstream.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -157,7 +158,11 @@ void Foam::lagrangianCloudWriter::write
     props.add("regions", cloud.regionNames());   // the field region's names
     dictionary procDict;
     procDict.add("particleCount", cloud.size());
-    props.add("processor0", procDict);
+    props.add
+    (
+        word("processor" + Foam::name(Pstream::myProcNo())),
+        procDict
+    );
     writeInto(props, folder);
 }
 

@@ -23,7 +23,8 @@ Foam::mpsCloudOutput::mpsCloudOutput(const polyMesh& mesh)
     mesh_(mesh),
     lagrangian_(mesh),
     vtk_(mesh.time()),
-    writeVTK_(mesh.time().controlDict().getOrDefault<bool>("writeVTK", true))
+    writeVTK_(mesh.time().controlDict().getOrDefault<bool>("writeVTK", true)),
+    decomposition_(nullptr)
 {}
 
 
@@ -71,15 +72,34 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
         rmDir(stagingDir);
     }
 
+    const boolList written
+    (
+        decomposition_ ? decomposition_->writtenHere(cloud) : boolList()
+    );
     PtrList<cloudFields> clouds(outputClouds::names().size());
+    boolList any(clouds.size());
     forAll(clouds, i)
     {
-        clouds.set(i, new cloudFields(outputClouds::names()[i], cloud));
+        clouds.set
+        (
+            i,
+            new cloudFields(outputClouds::names()[i], cloud, written)
+        );
+        any[i] = clouds[i].size() > 0;
+    }
+    if (Pstream::parRun())
+    {
+        // A cloud is written by every rank if one has particles of it
+        forAll(any, i)
+        {
+            reduce(any[i], orOp<bool>());
+        }
     }
 
-    for (cloudFields& c : clouds)
+    forAll(clouds, i)
     {
-        if (!c.size())
+        cloudFields& c = clouds[i];
+        if (!any[i])
         {
             continue;
         }
@@ -107,11 +127,11 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
     }
     Foam::mv(stagingDir, timeDir);
 
-    for (const cloudFields& c : clouds)
+    forAll(clouds, i)
     {
-        if (c.size() && writeVTK_)
+        if (any[i] && writeVTK_)
         {
-            vtk_.write(c);
+            vtk_.write(clouds[i]);
         }
     }
 }

@@ -16,6 +16,7 @@ License
 #include "foamVtkOutputOptions.H"
 #include "IFstream.H"
 #include "OSspecific.H"
+#include "Pstream.H"
 #include <fstream>
 #include <regex>
 
@@ -100,11 +101,16 @@ void Foam::vtkCloudWriter::writeSeries(const word& cloudName) const
             << " byte_order=\"LittleEndian\">\n"
             << "  <Collection>\n";
         os.precision(12);
+        // Pieces of one time (one per rank under -parallel) are its parts
+        label part = 0;
+        scalar lastTime = -GREAT;
         for (const auto& e : series_[cloudName])
         {
+            part = (e.first() == lastTime) ? part + 1 : 0;
+            lastTime = e.first();
             os  << "    <DataSet timestep=\"" << e.first()
-                << "\" group=\"\" part=\"0\" file=\"" << e.second().c_str()
-                << "\"/>\n";
+                << "\" group=\"\" part=\"" << part << "\" file=\""
+                << e.second().c_str() << "\"/>\n";
         }
         os  << "  </Collection>\n"
             << "</VTKFile>\n";
@@ -128,13 +134,22 @@ Foam::vtkCloudWriter::vtkCloudWriter(const Time& runTime)
 void Foam::vtkCloudWriter::write(const cloudFields& cloud)
 {
     const word& name = cloud.name();
-    if (!series_.found(name))
+    if (!series_.found(name) && Pstream::master())
     {
         readSeries(name);
     }
 
     mkDir(dir_);
-    const word file(name + "_" + Foam::name(runTime_.timeIndex()) + ".vtp");
+    // Under -parallel each rank writes its piece
+    const word stem(name + "_" + Foam::name(runTime_.timeIndex()));
+    auto pieceName = [&stem](const label proci)
+    {
+        return
+            Pstream::parRun()
+          ? word(stem + "_processor" + Foam::name(proci) + ".vtp")
+          : word(stem + ".vtp");
+    };
+    const word file(pieceName(Pstream::myProcNo()));
     const label n = cloud.size();
 
     {
@@ -192,6 +207,17 @@ void Foam::vtkCloudWriter::write(const cloudFields& cloud)
     }
     Foam::mv(dir_/file + ".tmp", dir_/file);
 
+    // The series: the master's, once every piece is in place
+    if (Pstream::parRun())
+    {
+        bool done = true;
+        reduce(done, andOp<bool>());
+    }
+    if (!Pstream::master())
+    {
+        return;
+    }
+
     // The run writes from this time on: entries of an earlier run at this
     // time or later go (as its files are overwritten, index by index)
     DynamicList<Tuple2<scalar, word>>& entries = series_(name);
@@ -200,7 +226,13 @@ void Foam::vtkCloudWriter::write(const cloudFields& cloud)
     {
         entries.remove();
     }
-    entries.append(Tuple2<scalar, word>(runTime_.value(), file));
+    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+    {
+        entries.append
+        (
+            Tuple2<scalar, word>(runTime_.value(), pieceName(proci))
+        );
+    }
     writeSeries(name);
 }
 

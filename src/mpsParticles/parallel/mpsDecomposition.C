@@ -270,6 +270,10 @@ Foam::label Foam::mpsDecomposition::distribute(mpsCloud& cloud) const
                 << "distribute() with halos in the cloud: remove them first"
                 << exit(FatalError);
         }
+        if (replicated(cloud.kind()[i]))
+        {
+            continue;
+        }
         const label rank = owner(x[i]);
         if (rank >= 0 && rank != Pstream::myProcNo())
         {
@@ -312,6 +316,10 @@ Foam::label Foam::mpsDecomposition::addHalos(mpsCloud& cloud)
     DynamicList<label> ranks;
     forAll(x, i)
     {
+        if (replicated(cloud.kind()[i]))
+        {
+            continue;
+        }
         nearRanks(x[i], haloWidth_, ranks);
         for (const label rank : ranks)
         {
@@ -337,6 +345,54 @@ Foam::label Foam::mpsDecomposition::addHalos(mpsCloud& cloud)
         nHalos += ids.size();
     }
     return nHalos;
+}
+
+
+void Foam::mpsDecomposition::keepOwned(mpsCloud& cloud) const
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    boolList keep(cloud.size());
+    forAll(keep, i)
+    {
+        const label rank = owner(cloud.x()[i]);
+        keep[i] =
+            replicated(cloud.kind()[i])
+         || rank == Pstream::myProcNo()
+         || (rank < 0 && Pstream::master());
+    }
+    cloud.subset(keep);
+}
+
+
+Foam::boolList Foam::mpsDecomposition::writtenHere
+(
+    const mpsCloud& cloud
+) const
+{
+    const UList<bool>& halo = cloud.halo();
+    boolList written(cloud.size());
+    forAll(written, i)
+    {
+        if (halo[i])
+        {
+            written[i] = false;
+        }
+        else if (replicated(cloud.kind()[i]))
+        {
+            const label rank = owner(cloud.x()[i]);
+            written[i] =
+                rank == Pstream::myProcNo()
+             || (rank < 0 && Pstream::master());
+        }
+        else
+        {
+            written[i] = true;
+        }
+    }
+    return written;
 }
 
 

@@ -15,6 +15,7 @@ License
 #include "mpsState.H"
 #include "Time.H"
 #include "clockValue.H"
+#include "Pstream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -25,6 +26,33 @@ namespace Foam
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Type>
+void Foam::fluidStructureInterface::sumRanks(List<Type>& values)
+{
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(values, plusEqOp<Type>());
+        Pstream::listCombineScatter(values);
+    }
+}
+
+
+Foam::labelList Foam::fluidStructureInterface::attachedHere
+(
+    boolList& owned
+) const
+{
+    labelList index(attachedId_.size());
+    owned.setSize(attachedId_.size());
+    forAll(attachedId_, k)
+    {
+        index[k] = cloud_.index(attachedId_[k]);
+        owned[k] = index[k] >= 0 && !cloud_.halo()[index[k]];
+    }
+    return index;
+}
+
 
 void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
 {
@@ -38,6 +66,7 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
     // Anchors: the nearest structural particle in the reference state
     anchor_.setSize(attached.size());
     offset_.setSize(attached.size());
+    wallX_.setSize(attached.size());
     DynamicList<label> walls;
     forAll(attached, k)
     {
@@ -54,6 +83,7 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
             }
         }
         offset_[k] = Xi - X[anchor_[k]];
+        wallX_[k] = Xi;
         if (cloud_.kind()[i] == particleKind::wall)
         {
             walls.append(k);
@@ -143,20 +173,25 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
 
 void Foam::fluidStructureInterface::transferPressure()
 {
-    const labelList attached(cloud_.indices(attachedId_, "attached wall"));
+    boolList owned;
+    const labelList index(attachedHere(owned));
     const scalarList& theta = structure_.model().theta();
 
     const mpsFluid* fluid =
         fluidPressure_ ? &mpsState::lookup(db()).fluid() : nullptr;
 
+    // The interface walls this rank owns (all of them in a serial run)
     force_ = Zero;
-    fluidForce_ = Zero;
-    wallForce_.setSize(attached.size());
+    wallForce_.setSize(attachedId_.size());
     wallForce_ = Zero;
     forAll(walls_, m)
     {
         const label k = walls_[m];
-        const label i = attached[k];
+        if (!owned[k])
+        {
+            continue;
+        }
+        const label i = index[k];
         const vector2D n
         (
             structureModel::rotate(theta[anchor_[k]], normal0_[m])
@@ -167,13 +202,19 @@ void Foam::fluidStructureInterface::transferPressure()
           : cloud_.p()[i];
         const vector2D F(-p*cloud_.spacing()[i]*n);
         wallForce_[k] = F;
-        fluidForce_ += F;
         for (label e = weightStart_[m]; e < weightStart_[m + 1]; ++e)
         {
             force_[weightParticle_[e]] += weight_[e]*F;
         }
     }
+    sumRanks(force_);
+    sumRanks(wallForce_);
 
+    fluidForce_ = Zero;
+    for (const label k : walls_)
+    {
+        fluidForce_ += wallForce_[k];
+    }
     vector2D sum(Zero);
     for (const vector2D& f : force_)
     {
@@ -367,20 +408,29 @@ void Foam::fluidStructureInterface::moveWalls()
     {
         return;
     }
-    const labelList attached(cloud_.indices(attachedId_, "attached wall"));
     List<vector2D> x, U;
     wallMotion(x, U);
-    forAll(attached, k)
+    if (wallForce_.size() == x.size())
     {
-        const label i = attached[k];
-        if (wallForce_.size() == attached.size())
+        // The fluid's force on each along its motion (interface walls;
+        // the others carry none)
+        forAll(x, k)
         {
-            // The fluid's force on it along its motion (interface walls;
-            // the others carry none)
-            wallWork_ += wallForce_[k] & (x[k] - cloud_.x()[i]);
+            wallWork_ += wallForce_[k] & (x[k] - wallX_[k]);
         }
-        cloud_.x()[i] = x[k];
-        cloud_.U()[i] = U[k];
+    }
+    wallX_ = x;
+
+    boolList owned;
+    const labelList index(attachedHere(owned));
+    forAll(index, k)
+    {
+        const label i = index[k];
+        if (i >= 0)
+        {
+            cloud_.x()[i] = x[k];
+            cloud_.U()[i] = U[k];
+        }
     }
 }
 
@@ -416,13 +466,19 @@ const Foam::mpsFluid::stepInfo& Foam::fluidStructureInterface::step
     // pressure through the divergence: the pressure solved with the walls
     // at the guessed end-of-step velocity, the structure's step under it,
     // the walls' new velocity; Aitken's relaxation (Kuettler & Wall 2008)
-    const labelList attached(cloud_.indices(attachedId_, "attached wall"));
-    const label n = attached.size();
-    List<vector2D> guess(n), x, U, r(n), rOld(n);
-    forAll(attached, k)
+    // (every rank holds the whole guess: each particle's from its owner)
+    boolList owned;
+    const labelList index(attachedHere(owned));
+    const label n = index.size();
+    List<vector2D> guess(n, Zero), x, U, r(n), rOld(n);
+    forAll(index, k)
     {
-        guess[k] = cloud_.U()[attached[k]];
+        if (owned[k])
+        {
+            guess[k] = cloud_.U()[index[k]];
+        }
     }
+    sumRanks(guess);
     structure_.saveState();
     // Every iteration solves from the step's old pressure (the rate form
     // of the compressibility reads it)
@@ -433,9 +489,12 @@ const Foam::mpsFluid::stepInfo& Foam::fluidStructureInterface::step
     while (lastIterations_ < maxIterations_)
     {
         ++lastIterations_;
-        forAll(attached, k)
+        forAll(index, k)
         {
-            cloud_.U()[attached[k]] = guess[k];
+            if (index[k] >= 0)
+            {
+                cloud_.U()[index[k]] = guess[k];
+            }
         }
         if (lastIterations_ > 1)
         {

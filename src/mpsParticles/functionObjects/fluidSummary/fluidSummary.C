@@ -107,9 +107,15 @@ bool Foam::functionObjects::fluidSummary::write()
     scalar sumU2 = 0;
     scalar maxU2 = 0;
     vector2D xMax(-GREAT, -GREAT);
+    labelList count(nParticleKinds, Zero);
     forAll(cloud.kind(), i)
     {
         const particleKind k = cloud.kind()[i];
+        if (cloud.halo()[i])
+        {
+            continue;
+        }
+        ++count[label(k)];
         if (k == particleKind::dummy || k == particleKind::structure)
         {
             continue;
@@ -129,14 +135,23 @@ bool Foam::functionObjects::fluidSummary::write()
         }
     }
 
-    const label nFluid = cloud.count(particleKind::fluid);
+    // (under -parallel: over every rank's own particles)
+    Pstream::listCombineGather(count, plusEqOp<label>());
+    reduce(nSurface, sumOp<label>());
+    reduce(nInterior, sumOp<label>());
+    reduce(nError, sumOp<scalar>());
+    reduce(sumU2, sumOp<scalar>());
+    reduce(maxU2, maxOp<scalar>());
+    reduce(xMax, maxOp<vector2D>());
+
+    const label nFluid = count[label(particleKind::fluid)];
     if (Pstream::master())
     {
         OFstream& os = file();
         writeCurrentTime(os);
         os  << tab << nFluid
-            << tab << cloud.count(particleKind::wall)
-            << tab << cloud.count(particleKind::dummy)
+            << tab << count[label(particleKind::wall)]
+            << tab << count[label(particleKind::dummy)]
             << tab << nSurface
             << tab << nFluid*sqr(l0)
             << tab << (nInterior ? nError/nInterior : 0)

@@ -14,6 +14,7 @@ License
 #include "particleProbes.H"
 #include "inputChecks.H"
 #include "mpsState.H"
+#include "mpsDecomposition.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -180,13 +181,24 @@ bool Foam::functionObjects::particleProbes::write()
     const UList<particleKind>& kind = cloud.kind();
     forAll(x, j)
     {
-        if (kind[j] == particleKind::dummy)
+        // (under -parallel each particle once: the halos are another
+        // rank's, the replicated structure the master's)
+        if
+        (
+            kind[j] == particleKind::dummy
+         || cloud.halo()[j]
+         || (mpsDecomposition::replicated(kind[j]) && !Pstream::master())
+        )
         {
             continue;
         }
         forAll(locations_, i)
         {
-            const vector2D d(x[j].x() - locations_[i].x(), x[j].y() - locations_[i].y());
+            const vector2D d
+            (
+                x[j].x() - locations_[i].x(),
+                x[j].y() - locations_[i].y()
+            );
             if (magSqr(d) < re*re)
             {
                 const scalar w = kernel.w(mag(d));
@@ -195,6 +207,12 @@ bool Foam::functionObjects::particleProbes::write()
                 U[i] += w*cloud.U()[j];
             }
         }
+    }
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(sumW, plusEqOp<scalar>());
+        Pstream::listCombineGather(p, plusEqOp<scalar>());
+        Pstream::listCombineGather(U, plusEqOp<vector2D>());
     }
     forAll(sumW, i)
     {

@@ -17,6 +17,8 @@ License
 #include "fluidStructureInterface.H"
 #include "OFstream.H"
 #include "OSspecific.H"
+#include "allRanks.H"
+#include "Tuple2.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -47,26 +49,37 @@ void Foam::functionObjects::wallPressure::setProbes()
 
     // The region's wall particles in the reference state: where the
     // structure they follow puts them there, else where they are
-    DynamicList<label> ids;
-    DynamicList<vector2D> X;
-    for
-    (
-        label i = cloud.begin(particleKind::wall);
-        i < cloud.end(particleKind::wall);
-        ++i
-    )
+    // (under -parallel those of every rank, in the order of their ids,
+    // the serial cloud's)
+    List<Tuple2<label, vector2D>> wall;
     {
-        if (cloud.region()[i] != r)
+        DynamicList<Tuple2<label, vector2D>> mine;
+        for
+        (
+            label i = cloud.begin(particleKind::wall);
+            i < cloud.end(particleKind::wall);
+            ++i
+        )
         {
-            continue;
+            if (cloud.region()[i] != r || cloud.halo()[i])
+            {
+                continue;
+            }
+            vector2D Xi(cloud.x()[i]);
+            if (coupling && coupling->active())
+            {
+                coupling->referencePosition(cloud.id()[i], Xi);
+            }
+            mine.append(Tuple2<label, vector2D>(cloud.id()[i], Xi));
         }
-        vector2D Xi(cloud.x()[i]);
-        if (coupling && coupling->active())
-        {
-            coupling->referencePosition(cloud.id()[i], Xi);
-        }
-        ids.append(cloud.id()[i]);
-        X.append(Xi);
+        wall = allRanksByFirst<Tuple2<label, vector2D>>(mine);
+    }
+    labelList ids(wall.size());
+    List<vector2D> X(wall.size());
+    forAll(wall, j)
+    {
+        ids[j] = wall[j].first();
+        X[j] = wall[j].second();
     }
 
     const label nProbes = probeNames_.size();
@@ -165,6 +178,38 @@ void Foam::functionObjects::wallPressure::writeSnapshot() const
     const scalar q = 0.5*state.fluid().rho()*sqr(Uref_);
     const label r = cloud.regionIndex(regionName_);
 
+    // The region's wall particles (under -parallel gathered from every
+    // rank, in the order of their ids: the serial cloud's)
+    DynamicList<Tuple2<label, vector>> mine;
+    for
+    (
+        label i = cloud.begin(particleKind::wall);
+        i < cloud.end(particleKind::wall);
+        ++i
+    )
+    {
+        if (cloud.region()[i] == r && !cloud.halo()[i])
+        {
+            const vector2D& x = cloud.x()[i];
+            mine.append
+            (
+                Tuple2<label, vector>
+                (
+                    cloud.id()[i],
+                    vector(x.x(), x.y(), pressure(state, i))
+                )
+            );
+        }
+    }
+    const List<Tuple2<label, vector>> wall
+    (
+        allRanksByFirst<Tuple2<label, vector>>(mine)
+    );
+    if (!Pstream::master())
+    {
+        return;
+    }
+
     // Written under a temporary name and renamed when complete
     const fileName dir(baseTimeDir());
     mkDir(dir);
@@ -186,19 +231,11 @@ void Foam::functionObjects::wallPressure::writeSnapshot() const
         writeTabbed(os, "p");
         writeTabbed(os, "Cp");
         os  << nl;
-        for
-        (
-            label i = cloud.begin(particleKind::wall);
-            i < cloud.end(particleKind::wall);
-            ++i
-        )
+        for (const Tuple2<label, vector>& w : wall)
         {
-            if (cloud.region()[i] == r)
-            {
-                const scalar p = pressure(state, i);
-                os  << cloud.x()[i].x() << tab << cloud.x()[i].y() << tab
-                    << p << tab << (p - pRef_)/q << nl;
-            }
+            const vector& v = w.second();
+            os  << v.x() << tab << v.y() << tab << v.z() << tab
+                << (v.z() - pRef_)/q << nl;
         }
     }
     Foam::mv(path + ".tmp", path);
@@ -328,11 +365,29 @@ bool Foam::functionObjects::wallPressure::execute()
     const mpsState& state = mpsState::lookup(mesh_);
     const mpsCloud& cloud = state.cloud();
     const scalar t = time_.value();
+
+    // Each particle's pressure from the rank that owns it
+    auto ownedPressure = [&](const label id)
+    {
+        const label i = cloud.index(id);
+        return (i >= 0 && !cloud.halo()[i]) ? pressure(state, i) : 0;
+    };
+    scalarList pa(probeNames_.size()), pb(probeNames_.size());
     forAll(probeNames_, pi)
     {
-        const scalar pa = pressure(state, cloud.index(idA_[pi]));
-        const scalar pb = pressure(state, cloud.index(idB_[pi]));
-        const scalar p = (1 - weightB_[pi])*pa + weightB_[pi]*pb;
+        pa[pi] = ownedPressure(idA_[pi]);
+        pb[pi] = ownedPressure(idB_[pi]);
+    }
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(pa, plusEqOp<scalar>());
+        Pstream::listCombineScatter(pa);
+        Pstream::listCombineGather(pb, plusEqOp<scalar>());
+        Pstream::listCombineScatter(pb);
+    }
+    forAll(probeNames_, pi)
+    {
+        const scalar p = (1 - weightB_[pi])*pa[pi] + weightB_[pi]*pb[pi];
 
         // Running mean over (t - W, t]: the newest sample in, those that
         // have left the window out (without a filter, the sample alone).
@@ -354,15 +409,11 @@ bool Foam::functionObjects::wallPressure::execute()
 
 bool Foam::functionObjects::wallPressure::write()
 {
-    if (!Pstream::master())
-    {
-        return true;
-    }
     if (time_.writeTime() || !probeNames_.size())
     {
         writeSnapshot();
     }
-    if (probeNames_.empty())
+    if (probeNames_.empty() || !Pstream::master())
     {
         return true;
     }
