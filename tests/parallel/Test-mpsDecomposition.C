@@ -101,17 +101,31 @@ label check
     numberDensity(local.x(), re, n, count);
 
     label nOwned = 0, nHalo = 0, wrongOwner = 0, wrongCount = 0;
+    label nReplicated = 0, nReplicatedFull = 0, wrongReplicated = 0;
+    for (const particleKind k : full.kind())
+    {
+        nReplicatedFull += mpsDecomposition::replicated(k);
+    }
     scalar maxError = 0;
     forAll(local.x(), i)
     {
+        const bool replicated =
+            mpsDecomposition::replicated(local.kind()[i]);
         if (local.halo()[i])
         {
             ++nHalo;
+            wrongReplicated += replicated;
+            continue;
+        }
+        if (replicated)
+        {
+            // (the structure reads no neighbour sums of the fluid's: its
+            // particles away from this rank's cells have no halos near)
+            ++nReplicated;
             continue;
         }
         ++nOwned;
-        const label owner = decomposition.owner(local.x()[i]);
-        if (owner != Pstream::myProcNo())
+        if (decomposition.owner(local.x()[i]) != Pstream::myProcNo())
         {
             ++wrongOwner;
         }
@@ -136,10 +150,21 @@ label check
         << wrongOwner << " particles on the wrong rank" << endl;
 
     label failures = 0;
-    if (nOwned != full.size())
+    if (nOwned != full.size() - nReplicatedFull)
     {
         Info<< "FAILED: " << nOwned << " particles owned, the cloud has "
-            << full.size() << endl;
+            << full.size() - nReplicatedFull << " not replicated" << endl;
+        ++failures;
+    }
+    // Every rank holds every replicated particle (the structure's), none
+    // of them as a halo
+    label badRanks = (nReplicated != nReplicatedFull || wrongReplicated);
+    reduce(badRanks, sumOp<label>());
+    if (badRanks)
+    {
+        Info<< "FAILED: " << badRanks << " ranks do not hold the "
+            << nReplicatedFull << " structure particles, or hold them as"
+            << " halos" << endl;
         ++failures;
     }
     if (wrongOwner || wrongCount)
@@ -310,8 +335,10 @@ int main(int argc, char *argv[])
         boolList keep(local.size());
         forAll(keep, i)
         {
+            // (the replicated kinds, the structure's, everywhere)
             keep[i] =
-                (local.id()[i] % Pstream::nProcs() == Pstream::myProcNo());
+                mpsDecomposition::replicated(local.kind()[i])
+             || (local.id()[i] % Pstream::nProcs() == Pstream::myProcNo());
         }
         local.subset(keep);
     }
