@@ -32,7 +32,8 @@
 # arrays enabled. With expectedCount 0 a cloud the reader does not offer
 # passes (OpenFOAM writes no files for an empty cloud).
 # .vtp and .pvd modes: also one vertex cell per point and a FieldData array
-# "TimeValue". A .pvd time must be one of the collection's timesteps
+# "TimeValue"; a .pvd time of several parts (pieces per rank) is checked
+# as the pieces joined. A .pvd time must be one of the collection's timesteps
 # (|t - time| <= 1e-9 max(1, |time|)).
 #
 # Errors and warnings VTK reports while reading count as failed checks.
@@ -50,6 +51,7 @@ from paraview.simple import OpenFOAMReader, PVDReader, XMLPolyDataReader
 from vtkmodules.vtkCommonCore import vtkFileOutputWindow, vtkLogger, vtkOutputWindow
 from vtkmodules.vtkCommonDataModel import (
     vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData)
+from vtkmodules.vtkFiltersCore import vtkAppendPolyData
 
 usageText = """Usage:
   readCloud <case>/<name>.foam <time> <cloud> <expectedCount> [<field> <min> <max>]...
@@ -358,8 +360,26 @@ def pvdMode(args):
         return chk.status()
     reader.UpdatePipeline(match[0])
     data = servermanager.Fetch(reader)
+    if isinstance(data, vtkMultiBlockDataSet):
+        # The parts of a time (mpsFsiFoam -parallel: one piece per rank),
+        # each PolyData, joined as ParaView's Merge Blocks would
+        pieces = leaves(data)
+        if not pieces or not all(isinstance(b, vtkPolyData) for _, b in pieces):
+            chk.fail("%s at time %s: parts that are not all PolyData" % (pvdFile, args[1]))
+            return chk.status()
+        append = vtkAppendPolyData()
+        for _, b in pieces:
+            append.AddInputData(b)
+        append.Update()
+        merged = vtkPolyData()
+        merged.ShallowCopy(append.GetOutput())
+        merged.SetFieldData(pieces[0][1].GetFieldData())
+        chk.ok("%s at time %s: %d pieces (parts), %s points"
+               % (pvdFile, args[1], len(pieces),
+                  "+".join(str(b.GetNumberOfPoints()) for _, b in pieces)))
+        data = merged
     if not isinstance(data, vtkPolyData):
-        chk.fail("%s at time %s: %s, not one PolyData (several parts?)"
+        chk.fail("%s at time %s: %s, not PolyData"
                  % (pvdFile, args[1], data.GetClassName() if data else "nothing"))
         return chk.status()
     checkPolyData(chk, data, "file %s at %s" % (pvdFile, args[1]), expectedCount, fields,

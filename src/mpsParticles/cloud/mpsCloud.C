@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsCloud.H"
+#include "Pstream.H"
 #include "mpsCloudListField.H"
 #include <algorithm>
 
@@ -180,6 +181,12 @@ Foam::wordList Foam::mpsCloud::regionNames
     for (const label i : select(kinds))
     {
         holds[region_[i]] = true;
+    }
+    if (Pstream::parRun())
+    {
+        // Those of every rank (a region can lie on other ranks only)
+        Pstream::listCombineGather(holds, orEqOp<bool>());
+        Pstream::listCombineScatter(holds);
     }
     DynamicList<word> names;
     forAll(holds, r)
