@@ -628,6 +628,7 @@ Foam::mpsFluid::mpsFluid
     domain_(domain),
     lastSolveTime_(0),
     decomposition_(nullptr),
+    exchangeTime_(0),
     rowStart_(0),
     nGlobalRows_(0)
 {
@@ -772,9 +773,11 @@ void Foam::mpsFluid::redistribute()
 {
     if (decomposition_)
     {
+        const clockValue clock(true);
         mpsDecomposition::removeHalos(cloud_);
         decomposition_->distribute(cloud_);
         decomposition_->addHalos(cloud_);
+        exchangeTime_ += clock.elapsed();
     }
 }
 
@@ -956,6 +959,7 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
     syncHalos(cloud_.U());
     reduceRanks(info_.maxShift, maxOp<scalar>());
     info_.timeRest += clock.elapsed();
+    info_.timeExchange = exchangeTime_;
 
     return info_;
 }
