@@ -16,6 +16,7 @@ License
 #include "cloud.H"
 #include "IOField.H"
 #include "IFstream.H"
+#include <algorithm>
 #include "Time.H"
 #include "mpsDecomposition.H"
 
@@ -150,6 +151,20 @@ bool Foam::lagrangianCloudReader::hasClouds(const fileName& timeDir)
 }
 
 
+bool Foam::lagrangianCloudReader::hasCoordinatesOnly(const fileName& timeDir)
+{
+    for (const word& c : outputClouds::names())
+    {
+        const fileName dir(timeDir/cloud::prefix/c);
+        if (isFile(dir/"coordinates") && !isFile(dir/"positions"))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
 bool Foam::lagrangianCloudReader::found() const
 {
     return hasClouds(mesh_.time().path()/mesh_.time().timeName());
@@ -173,7 +188,10 @@ void Foam::lagrangianCloudReader::checkComplete(const mpsCloud& cloud) const
             }
         }
         const fileName positions(dir/c/"positions");
-        if (count && !isFile(positions))
+        // (under -parallel on some processor)
+        bool present = isFile(positions);
+        reduce(present, orOp<bool>());
+        if (count && !present)
         {
             FatalErrorInFunction
                 << "Cannot continue from time " << mesh_.time().timeName()
@@ -245,6 +263,17 @@ void Foam::lagrangianCloudReader::read(mpsCloud& cloud) const
             }
         }
     }
+    // (kinds in order: a cloud that decomposePar split by cells may hold
+    // the wall cloud's wall and dummy particles mixed)
+    std::stable_sort
+    (
+        from.begin(),
+        from.end(),
+        [&cloud](const label a, const label b)
+        {
+            return int(cloud.kind()[a]) < int(cloud.kind()[b]);
+        }
+    );
     cloud.reorder(from);
 }
 

@@ -513,15 +513,22 @@ void Foam::mpsStructure::readRestart(const lagrangianCloudReader& reader)
         return;
     }
     // Under -parallel each rank wrote a part of the structure (that in
-    // its cells) and every rank holds all of it: the parts are gathered
-    const IOField<label> idIO(reader.fieldIO("structure", "id"));
+    // its cells) and every rank holds all of it: the parts are gathered (a
+    // processor without a part has no files when decomposePar wrote them)
+    auto io = [&](const word& name)
+    {
+        IOobject fieldIO(reader.fieldIO("structure", name));
+        if (Pstream::parRun())
+        {
+            fieldIO.readOpt() = IOobject::READ_IF_PRESENT;
+        }
+        return fieldIO;
+    };
+    const IOField<label> idIO(io("id"));
     auto read = [&](const word& name, auto zero)
     {
         typedef decltype(zero) Type;
-        return allRanks<Type>
-        (
-            IOField<Type>(reader.fieldIO("structure", name))
-        );
+        return allRanks<Type>(IOField<Type>(io(name)));
     };
     const labelList id(allRanks<label>(idIO));
     const List<vector> D(read("D", vector::zero));
