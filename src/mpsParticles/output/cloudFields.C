@@ -13,6 +13,7 @@ License
 
 #include "cloudFields.H"
 #include "outputClouds.H"
+#include <algorithm>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -20,7 +21,8 @@ Foam::cloudFields::cloudFields
 (
     const word& name,
     const mpsCloud& cloud,
-    const UList<bool>& written
+    const UList<bool>& written,
+    const labelUList& order
 )
 :
     name_(name),
@@ -37,6 +39,18 @@ Foam::cloudFields::cloudFields
         {
             ids.append(i);
         }
+    }
+    if (order.size())
+    {
+        std::stable_sort
+        (
+            ids.begin(),
+            ids.end(),
+            [&order](const label a, const label b)
+            {
+                return order[a] < order[b];
+            }
+        );
     }
     ids_.transfer(ids);
 

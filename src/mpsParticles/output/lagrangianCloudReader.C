@@ -16,6 +16,7 @@ License
 #include "cloud.H"
 #include "IOField.H"
 #include "IFstream.H"
+#include "passiveParticle.H"
 #include <algorithm>
 #include "Time.H"
 #include "mpsDecomposition.H"
@@ -33,7 +34,12 @@ void Foam::lagrangianCloudReader::readCloud
     const fileName local(cloud::prefix/cloudName);
     const word& timeName = mesh_.time().timeName();
     const fileName dir(mesh_.time().path()/timeName/local);
-    if (!isFile(dir/"positions"))
+    // The positions as the solver and reconstructPar write them, or
+    // OpenFOAM's barycentric coordinates alone (decomposePar writes those:
+    // a serial time decomposed to continue under -parallel)
+    const bool barycentric = !isFile(dir/"positions");
+    const word posName(barycentric ? "coordinates" : "positions");
+    if (!isFile(dir/posName))
     {
         return;
     }
@@ -42,9 +48,11 @@ void Foam::lagrangianCloudReader::readCloud
 
     const IOField<label> id(io("id"));
 
-    // positions: "(x y z) celli" entries
-    IFstream is(dir/"positions");
-    IOobject posIO(io("positions"));
+    // positions: "(x y z) celli" entries; coordinates: OpenFOAM's
+    // particles (barycentric coordinates in a tet of a cell), located by
+    // OpenFOAM's own particle
+    IFstream is(dir/posName);
+    IOobject posIO(io(posName));
     if (!posIO.readHeader(is))
     {
         FatalIOErrorInFunction(is)
@@ -60,12 +68,20 @@ void Foam::lagrangianCloudReader::readCloud
             << exit(FatalIOError);
     }
     labelList index(n);
-    is.readBegin("positions");
+    is.readBegin(posName.c_str());
     for (label k = 0; k < n; ++k)
     {
         point x;
-        label celli;
-        is >> x >> celli;
+        if (barycentric)
+        {
+            const passiveParticle p(mesh_, is, false, true);
+            x = p.position();
+        }
+        else
+        {
+            label celli;
+            is >> x >> celli;
+        }
         const label i = cloud.index(id[k]);
         if (i < 0)
         {
@@ -86,7 +102,7 @@ void Foam::lagrangianCloudReader::readCloud
         found[i] = true;
         order.append(i);
     }
-    is.readEnd("positions");
+    is.readEnd(posName.c_str());
 
     // The fields marked for a restart that mean something for the cloud's
     // kinds (the cloud's writer wrote those)
@@ -142,21 +158,8 @@ bool Foam::lagrangianCloudReader::hasClouds(const fileName& timeDir)
 {
     for (const word& c : outputClouds::names())
     {
-        if (isFile(timeDir/cloud::prefix/c/"positions"))
-        {
-            return true;
-        }
-    }
-    return false;
-}
-
-
-bool Foam::lagrangianCloudReader::hasCoordinatesOnly(const fileName& timeDir)
-{
-    for (const word& c : outputClouds::names())
-    {
         const fileName dir(timeDir/cloud::prefix/c);
-        if (isFile(dir/"coordinates") && !isFile(dir/"positions"))
+        if (isFile(dir/"positions") || isFile(dir/"coordinates"))
         {
             return true;
         }
@@ -188,8 +191,9 @@ void Foam::lagrangianCloudReader::checkComplete(const mpsCloud& cloud) const
             }
         }
         const fileName positions(dir/c/"positions");
-        // (under -parallel on some processor)
-        bool present = isFile(positions);
+        // (under -parallel on some processor: decomposePar writes no
+        // cloud where a processor has none of its particles)
+        bool present = isFile(positions) || isFile(dir/c/"coordinates");
         reduce(present, orOp<bool>());
         if (count && !present)
         {
@@ -241,10 +245,20 @@ void Foam::lagrangianCloudReader::read(mpsCloud& cloud) const
             << " written clouds (they had left the domain): removed" << nl;
     }
 
-    // The particles in the order they were written (the clouds' order is
-    // the kinds'), so that the run continues with the sums over neighbours
-    // in the order the written run had them: a restart continues exactly;
-    // the replicated kinds in the generated order, as they always are
+    // A serial run keeps the generated order (as the written run had it:
+    // it writes in the order of the cells). Under -parallel the particles
+    // in the order this rank wrote them (its cloud's), so that the run
+    // continues with the sums over neighbours in the order the written run
+    // had them: a restart continues exactly; the replicated kinds in the
+    // generated order, as they always are
+    if (!par)
+    {
+        if (found.found(false))
+        {
+            cloud.subset(found);
+        }
+        return;
+    }
     DynamicList<label> from(order.size());
     for (const label i : order)
     {

@@ -76,6 +76,22 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
     (
         decomposition_ ? decomposition_->writtenHere(cloud) : boolList()
     );
+    // A serial run writes its particles in the order of their cells:
+    // v1912's decomposePar writes a processor's positions in cell order
+    // and its fields in the file's order, which agree only so (a serial
+    // time decomposed to continue under -parallel). Under -parallel each
+    // rank writes in its cloud's order, so that a restart reads the
+    // particles back in it and continues exactly
+    labelList cellOrder;
+    if (!decomposition_)
+    {
+        cellOrder.setSize(cloud.size());
+        forAll(cellOrder, i)
+        {
+            const vector2D& x = cloud.x()[i];
+            cellOrder[i] = mesh_.findCell(point(x.x(), x.y(), 0));
+        }
+    }
     PtrList<cloudFields> clouds(outputClouds::names().size());
     boolList any(clouds.size());
     forAll(clouds, i)
@@ -83,7 +99,10 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
         clouds.set
         (
             i,
-            new cloudFields(outputClouds::names()[i], cloud, written)
+            new cloudFields
+            (
+                outputClouds::names()[i], cloud, written, cellOrder
+            )
         );
         any[i] = clouds[i].size() > 0;
     }
