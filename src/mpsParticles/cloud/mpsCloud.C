@@ -12,7 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsCloud.H"
-#include "Pstream.H"
+#include "allRanks.H"
 #include "mpsCloudListField.H"
 #include <algorithm>
 
@@ -182,12 +182,8 @@ Foam::wordList Foam::mpsCloud::regionNames
     {
         holds[region_[i]] = true;
     }
-    if (Pstream::parRun())
-    {
-        // Those of every rank (a region can lie on other ranks only)
-        Pstream::listCombineGather(holds, orEqOp<bool>());
-        Pstream::listCombineScatter(holds);
-    }
+    // Those of every rank (a region can lie on other ranks only)
+    combineRanks(holds, orEqOp<bool>());
     DynamicList<word> names;
     forAll(holds, r)
     {

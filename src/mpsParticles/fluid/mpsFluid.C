@@ -782,19 +782,25 @@ void Foam::mpsFluid::redistribute()
 }
 
 
+void Foam::mpsFluid::rebuildPairs()
+{
+    redistribute();
+    updateNeighbours();
+    gradient_->gradient
+    (
+        cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_
+    );
+    syncHalos(gradP_);
+}
+
+
 void Foam::mpsFluid::localise()
 {
     if (decomposition_)
     {
         // The pairs and gradients that fluidPressureAt reads follow the
         // particles to their ranks
-        redistribute();
-        updateNeighbours();
-        gradient_->gradient
-        (
-            cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_
-        );
-        syncHalos(gradP_);
+        rebuildPairs();
     }
 }
 
@@ -946,13 +952,7 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
     {
         // The pairs and gradients that fluidPressureAt reads belong to
         // the particles before the removal: rebuilt for those that remain
-        redistribute();
-        updateNeighbours();
-        gradient_->gradient
-        (
-            cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_
-        );
-        syncHalos(gradP_);
+        rebuildPairs();
     }
     info_.maxShift = shifting_->shift(cloud_, nbrs_, l0_, kN_->re(), dt);
     syncHalos(cloud_.x());

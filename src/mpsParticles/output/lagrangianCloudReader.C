@@ -262,19 +262,16 @@ void Foam::lagrangianCloudReader::read(mpsCloud& cloud) const
     DynamicList<label> from(order.size());
     for (const label i : order)
     {
-        if (!par || !mpsDecomposition::replicated(cloud.kind()[i]))
+        if (!mpsDecomposition::replicated(cloud.kind()[i]))
         {
             from.append(i);
         }
     }
-    if (par)
+    forAll(found, i)
     {
-        forAll(found, i)
+        if (mpsDecomposition::replicated(cloud.kind()[i]))
         {
-            if (mpsDecomposition::replicated(cloud.kind()[i]))
-            {
-                from.append(i);
-            }
+            from.append(i);
         }
     }
     // (kinds in order: a cloud that decomposePar split by cells may hold

@@ -15,6 +15,7 @@ License
 #include "outputClouds.H"
 #include "Time.H"
 #include "OSspecific.H"
+#include "allRanks.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -81,7 +82,8 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
     // and its fields in the file's order, which agree only so (a serial
     // time decomposed to continue under -parallel). Under -parallel each
     // rank writes in its cloud's order, so that a restart reads the
-    // particles back in it and continues exactly
+    // particles back in it and continues exactly (the writer finds the
+    // cells again for the positions file: at write times only)
     labelList cellOrder;
     if (!decomposition_)
     {
@@ -106,14 +108,8 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
         );
         any[i] = clouds[i].size() > 0;
     }
-    if (Pstream::parRun())
-    {
-        // A cloud is written by every rank if one has particles of it
-        forAll(any, i)
-        {
-            reduce(any[i], orOp<bool>());
-        }
-    }
+    // A cloud is written by every rank if one has particles of it
+    combineRanks(any, orEqOp<bool>());
 
     forAll(clouds, i)
     {

@@ -348,6 +348,13 @@ Foam::label Foam::mpsDecomposition::addHalos(mpsCloud& cloud)
 }
 
 
+bool Foam::mpsDecomposition::inMyCells(const vector2D& x) const
+{
+    const label rank = owner(x);
+    return rank == Pstream::myProcNo() || (rank < 0 && Pstream::master());
+}
+
+
 void Foam::mpsDecomposition::keepOwned(mpsCloud& cloud) const
 {
     if (!Pstream::parRun())
@@ -357,11 +364,7 @@ void Foam::mpsDecomposition::keepOwned(mpsCloud& cloud) const
     boolList keep(cloud.size());
     forAll(keep, i)
     {
-        const label rank = owner(cloud.x()[i]);
-        keep[i] =
-            replicated(cloud.kind()[i])
-         || rank == Pstream::myProcNo()
-         || (rank < 0 && Pstream::master());
+        keep[i] = replicated(cloud.kind()[i]) || inMyCells(cloud.x()[i]);
     }
     cloud.subset(keep);
 }
@@ -372,25 +375,12 @@ Foam::boolList Foam::mpsDecomposition::writtenHere
     const mpsCloud& cloud
 ) const
 {
-    const UList<bool>& halo = cloud.halo();
     boolList written(cloud.size());
     forAll(written, i)
     {
-        if (halo[i])
-        {
-            written[i] = false;
-        }
-        else if (replicated(cloud.kind()[i]))
-        {
-            const label rank = owner(cloud.x()[i]);
-            written[i] =
-                rank == Pstream::myProcNo()
-             || (rank < 0 && Pstream::master());
-        }
-        else
-        {
-            written[i] = true;
-        }
+        written[i] =
+            !cloud.halo()[i]
+         && (!replicated(cloud.kind()[i]) || inMyCells(cloud.x()[i]));
     }
     return written;
 }

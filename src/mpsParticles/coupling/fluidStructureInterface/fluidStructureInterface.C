@@ -15,7 +15,7 @@ License
 #include "mpsState.H"
 #include "Time.H"
 #include "clockValue.H"
-#include "Pstream.H"
+#include "allRanks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -26,17 +26,6 @@ namespace Foam
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-template<class Type>
-void Foam::fluidStructureInterface::sumRanks(List<Type>& values)
-{
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(values, plusEqOp<Type>());
-        Pstream::listCombineScatter(values);
-    }
-}
-
 
 Foam::labelList Foam::fluidStructureInterface::attachedHere
 (
@@ -207,8 +196,8 @@ void Foam::fluidStructureInterface::transferPressure()
             force_[weightParticle_[e]] += weight_[e]*F;
         }
     }
-    sumRanks(force_);
-    sumRanks(wallForce_);
+    combineRanks(force_, plusEqOp<vector2D>());
+    combineRanks(wallForce_, plusEqOp<vector2D>());
 
     fluidForce_ = Zero;
     for (const label k : walls_)
@@ -478,7 +467,7 @@ const Foam::mpsFluid::stepInfo& Foam::fluidStructureInterface::step
             guess[k] = cloud_.U()[index[k]];
         }
     }
-    sumRanks(guess);
+    combineRanks(guess, plusEqOp<vector2D>());
     structure_.saveState();
     // Every iteration solves from the step's old pressure (the rate form
     // of the compressibility reads it)

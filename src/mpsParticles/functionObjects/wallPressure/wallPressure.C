@@ -378,13 +378,8 @@ bool Foam::functionObjects::wallPressure::execute()
         pa[pi] = ownedPressure(idA_[pi]);
         pb[pi] = ownedPressure(idB_[pi]);
     }
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(pa, plusEqOp<scalar>());
-        Pstream::listCombineScatter(pa);
-        Pstream::listCombineGather(pb, plusEqOp<scalar>());
-        Pstream::listCombineScatter(pb);
-    }
+    combineRanks(pa, plusEqOp<scalar>());
+    combineRanks(pb, plusEqOp<scalar>());
     forAll(probeNames_, pi)
     {
         const scalar p = (1 - weightB_[pi])*pa[pi] + weightB_[pi]*pb[pi];
