@@ -19,9 +19,15 @@ set xlabel "t [s]"
 set ylabel "F_y [kN/m]"
 set key top left
 set grid
+# interFoam's 1 ms means (data/interFoam_rigidWedge_force.dat: 30 deg,
+# 4 m/s, a 1 mm mesh; drawn at 30 deg only), through the chine
+set xrange [0:*]
 plot "postProcessing/structureForces/0/force.dat" u 1:($3/1e3) w l lw 1.5 lc rgb "#1f77b4" t "mpsFsiFoam", \
      FW(x)/1e3 w l lw 2 dt 2 lc rgb "black" t "Wagner", \
-     FK(x)/1e3 w l lw 2 dt 3 lc rgb "#d62728" t "von Karman"
+     FK(x)/1e3 w l lw 2 dt 3 lc rgb "#d62728" t "von Karman", \
+     "data/interFoam_rigidWedge_force.dat" u 1:(deadrise == 30 ? $2/1e3 : 1/0) \
+         w lp pt 5 ps 1 lw 1.5 lc rgb "#2ca02c" t "interFoam, 1 mm mesh (1 ms means)"
+set xrange [*:*]
 
 # Pressure along the wall at three times: Wagner's outer solution
 #   p = rho V c cdot/sqrt(c^2 - x^2) - rho V^2 x^2/(2 (c^2 - x^2)),
