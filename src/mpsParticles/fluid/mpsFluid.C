@@ -703,6 +703,19 @@ Foam::mpsFluid::mpsFluid
         }
     }
 
+    Info<< "Pressure equation: source " << sourceTypeNames[source_]
+        << ", surfaceCondition " << surfaceConditionTypeNames[surfaceCondition_];
+    if (compressibility_ > 0)
+    {
+        Info<< ", compressibility " << compressibility_ << " 1/Pa ("
+            << compressibilityFormTypeNames[compressibilityForm_]
+            << "): sound speed " << soundSpeed() << " m/s" << nl;
+    }
+    else
+    {
+        Info<< ", incompressible (compressibility 0)" << nl;
+    }
+
     freeSurface_ = freeSurfaceModel::New(dict);
     collision_ = collisionModel::New(dict);
     shifting_ = particleShifting::New(dict);
@@ -753,6 +766,24 @@ void Foam::mpsFluid::evaluate()
         cloud_, nbrs_, wN_, n0N_, F0_, cloud_.surface()
     );
     syncHalos(cloud_.surface());
+}
+
+
+Foam::scalar Foam::mpsFluid::soundSpeed() const
+{
+    if (!(compressibility_ > 0))
+    {
+        return 0;
+    }
+    // At rest (no divergence) and uniform n the rows read kappa p = gamma
+    // (rho/dt^2)(n - n0)/n0 (absolute), or, steady (p = p_old), gamma kappa
+    // p = gamma (rho/dt^2)(n - n0)/n0 (rate), kappa = alpha rho/dt^2
+    const bool rate =
+        compressibilityForm_ == compressibilityFormType::rate
+     && source_ != sourceType::numberDensity;
+    const scalar gamma =
+        (source_ == sourceType::numberDensity || rate) ? 1 : relaxation_;
+    return sqrt(gamma/(compressibility_*rho_));
 }
 
 
