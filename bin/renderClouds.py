@@ -46,6 +46,12 @@ def nearest(t):
     return min(caseTimes, key=lambda s: abs(s - t))
 
 
+def strained(ds):
+    """Whether the structure carries an axial strain anywhere (not rigid)."""
+    a = ds.GetPointData().GetArray("axialStrain")
+    return a is not None and max(abs(v) for v in a.GetRange()) > 0
+
+
 def particleSpacing(ds):
     """Median nearest-neighbour distance of (up to 400 of) the points."""
     n = ds.GetNumberOfPoints()
@@ -146,9 +152,13 @@ for t in times:
         if c == "fluid":
             pv.ColorBy(d, ("POINTS", "p"))
             d.SetScalarBarVisibility(view, True)
-        elif c == "structure" and ds.GetPointData().GetArray("axialStrain"):
+        elif c == "structure" and strained(ds):
             pv.ColorBy(d, ("POINTS", "axialStrain"))
             d.SetScalarBarVisibility(view, True)
+        elif c == "structure":
+            # A rigid body (no strain anywhere): one colour, no colour bar
+            d.ColorArrayName = ["POINTS", ""]
+            d.AmbientColor = d.DiffuseColor = [0.3, 0.3, 0.35]
         else:
             pv.ColorBy(d, None)
             d.AmbientColor = d.DiffuseColor = [0.75, 0.75, 0.75]
@@ -171,7 +181,7 @@ for t in times:
         bar.ScalarBarLength = 0.35
         bar.DrawTickLabels = 0
         bar.RangeLabelFormat = "%.3g"
-    if "structure" in shown and shown["structure"][2].GetPointData().GetArray("axialStrain"):
+    if "structure" in shown and strained(shown["structure"][2]):
         r = shown["structure"][2].GetPointData().GetArray("axialStrain").GetRange()
         e = max(abs(r[0]), abs(r[1]), 1e-12)
         sLut.RescaleTransferFunction(-e, e)
