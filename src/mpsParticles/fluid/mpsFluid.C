@@ -272,9 +272,7 @@ void Foam::mpsFluid::assemblePressure
     // (a fluid of sound speed 1/sqrt(alpha rho)), the relaxation's density
     // error is measured from n0 (1 + alpha p): gamma kappa p; the numberDensity
     // source has no rate term, so it stays absolute
-    const bool rate =
-        compressibilityForm_ == compressibilityFormType::rate
-     && source_ != sourceType::numberDensity;
+    const bool rate = rateForm();
     const scalar diagComp = rate ? (1 + relaxation_)*kappa : kappa;
     const scalar oldComp = rate ? kappa : 0;
 
@@ -708,7 +706,12 @@ Foam::mpsFluid::mpsFluid
     if (compressibility_ > 0)
     {
         Info<< ", compressibility " << compressibility_ << " 1/Pa ("
-            << compressibilityFormTypeNames[compressibilityForm_]
+            << compressibilityFormTypeNames
+               [
+                   rateForm()
+                 ? compressibilityFormType::rate
+                 : compressibilityFormType::absolute
+               ]
             << "): sound speed " << soundSpeed() << " m/s" << nl;
     }
     else
@@ -778,11 +781,8 @@ Foam::scalar Foam::mpsFluid::soundSpeed() const
     // At rest (no divergence) and uniform n the rows read kappa p = gamma
     // (rho/dt^2)(n - n0)/n0 (absolute), or, steady (p = p_old), gamma kappa
     // p = gamma (rho/dt^2)(n - n0)/n0 (rate), kappa = alpha rho/dt^2
-    const bool rate =
-        compressibilityForm_ == compressibilityFormType::rate
-     && source_ != sourceType::numberDensity;
     const scalar gamma =
-        (source_ == sourceType::numberDensity || rate) ? 1 : relaxation_;
+        (source_ == sourceType::numberDensity || rateForm()) ? 1 : relaxation_;
     return sqrt(gamma/(compressibility_*rho_));
 }
 
