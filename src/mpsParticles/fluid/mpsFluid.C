@@ -25,6 +25,7 @@ const Foam::Enum<Foam::mpsFluid::sourceType> Foam::mpsFluid::sourceTypeNames
     { sourceType::numberDensity, "numberDensity" },
     { sourceType::mixed, "mixed" },
     { sourceType::higherOrder, "higherOrder" },
+    { sourceType::errorCompensating, "errorCompensating" },
 });
 
 const Foam::Enum<Foam::mpsFluid::surfaceConditionType>
@@ -273,7 +274,6 @@ void Foam::mpsFluid::assemblePressure
     // error is measured from n0 (1 + alpha p): gamma kappa p; the numberDensity
     // source has no rate term, so it stays absolute
     const bool rate = rateForm();
-    const scalar diagComp = rate ? (1 + relaxation_)*kappa : kappa;
     const scalar oldComp = rate ? kappa : 0;
 
     // The matrix is written straight into compressed rows, in parallel:
@@ -329,7 +329,7 @@ void Foam::mpsFluid::assemblePressure
             continue;
         }
 
-        scalar diag = diagComp;
+        scalar diag = 0;
         scalar div = 0;
         scalar nL = 0;
         label e = start;
@@ -351,6 +351,7 @@ void Foam::mpsFluid::assemblePressure
             }
             if (source_ == sourceType::mixed)
             {
+                // (a velocity divergence: the mixed source's)
                 const vector2D r(x[j] - x[i]);
                 div += ((U[j] - U[i]) & r)*wN_[k]/max(magSqr(r), minR2_);
             }
@@ -363,6 +364,13 @@ void Foam::mpsFluid::assemblePressure
             // diagonal, and varies continuously as neighbours come and go
             diag += airFactor*lapCoeff*max(n0L_ - nL, scalar(0));
         }
+
+        // The source, and the coefficient gamma of its density error
+        const rowSource s(source(i, divCoeff*div, dt, airSites));
+        diag += rate ? (1 + s.gamma)*kappa : kappa;
+        b[row] = -s.rhs + oldComp*p[i];
+        sol[row] = p[i];
+
         cols[e] = unknown_[i];
         vals[e] = diag;
         ++e;
@@ -384,46 +392,87 @@ void Foam::mpsFluid::assemblePressure
             vals[l + 1] = v;
         }
 
-        // The density term corrects compression and rarefaction; with the
-        // continuous and extrapolated conditions only compression (n* > n0),
-        // since a deficit of neighbours there is the surface's, not a
-        // rarefaction
-        scalar densitySource = rho_/sqr(dt)*(n0N_ - n[i])/n0N_;
-        if (airSites)
+    }
+
+}
+
+
+Foam::mpsFluid::rowSource Foam::mpsFluid::source
+(
+    const label i,
+    const scalar divergence,
+    const scalar dt,
+    const bool airSites
+) const
+{
+    const scalar n = cloud_.n()[i];
+
+    // The density error (n - n0)/n0; with the continuous and extrapolated
+    // conditions compression only (n* > n0), since a deficit of neighbours
+    // there is the surface's, not a rarefaction
+    scalar error = (n - n0N_)/n0N_;
+    if (airSites)
+    {
+        error = max(error, scalar(0));
+    }
+    const scalar densitySource = -rho_/sqr(dt)*error;
+
+    // With fillVoids, neighbours that approach a particle short of
+    // neighbours (n < n0) fill its void before they compress the water:
+    // the compression rate the source corrects is what exceeds the rate
+    // that fills the deficit (n0 - n)/n0 within the step
+    const scalar deficit = fillVoids_ ? max(n0N_ - n, scalar(0))/n0N_ : 0;
+
+    rowSource s;
+    switch (source_)
+    {
+        case sourceType::numberDensity:
         {
-            densitySource = min(densitySource, scalar(0));
+            s.rhs = densitySource;
+            s.gamma = 1;
+            break;
         }
-        // With fillVoids, neighbours that approach a particle short of
-        // neighbours (n < n0) fill its void before they compress the water:
-        // the compression rate the source corrects is what exceeds the
-        // rate that fills the deficit (n0 - n)/n0 within the step
-        const scalar deficit =
-            fillVoids_ ? max(n0N_ - n[i], scalar(0))/n0N_ : 0;
-        scalar rhs = densitySource;
-        if (source_ == sourceType::mixed)
+        case sourceType::mixed:
         {
-            scalar divergence = divCoeff*div;
-            if (divergence < 0)
+            scalar div = divergence;
+            if (div < 0)
             {
-                divergence = min(divergence + deficit/dt, scalar(0));
+                div = min(div + deficit/dt, scalar(0));
             }
-            rhs = rho_/dt*divergence + relaxation_*densitySource;
+            s.rhs = rho_/dt*div + relaxation_*densitySource;
+            s.gamma = relaxation_;
+            break;
         }
-        else if (source_ == sourceType::higherOrder)
+        case sourceType::higherOrder:
+        case sourceType::errorCompensating:
         {
+            // (1/n0) Dn_i/Dt: positive for a compression
             scalar nRate =
                 numberDensityRate(cloud_, nbrs_, kN_(), i, minR_)/n0N_;
             if (nRate > 0)
             {
                 nRate = max(nRate - deficit/dt, scalar(0));
             }
-            rhs = -rho_/dt*nRate + relaxation_*densitySource;
+            if (source_ == sourceType::higherOrder)
+            {
+                s.rhs = -rho_/dt*nRate + relaxation_*densitySource;
+                s.gamma = relaxation_;
+            }
+            else
+            {
+                // Khayyer & Gotoh (2011): the rate term scaled up by the
+                // density error's size, and the density error corrected
+                // with the coefficient |dt (1/n0) Dn/Dt|, so that both
+                // parts scale as 1/dt, as the rate term does
+                const scalar gamma = mag(dt*nRate);
+                s.rhs =
+                    -(1 + mag(error))*rho_/dt*nRate + gamma*densitySource;
+                s.gamma = gamma;
+            }
+            break;
         }
-        b[row] = -rhs;
-        b[row] += oldComp*p[i];
-        sol[row] = p[i];
     }
-
+    return s;
 }
 
 
@@ -690,6 +739,21 @@ Foam::mpsFluid::mpsFluid
                 << "Entry 'fillVoids' needs surfaceCondition continuous or"
                 << " extrapolated (flagged sets the particles short of"
                 << " neighbours to p = 0)" << exit(FatalIOError);
+        }
+        if
+        (
+            source_ == sourceType::errorCompensating
+         && compressibility_ > 0
+         && compressibilityForm_ == compressibilityFormType::absolute
+        )
+        {
+            FatalIOErrorInFunction(ppe)
+                << "Entry 'source errorCompensating' with 'compressibility' "
+                << compressibility_ << " needs 'compressibilityForm rate'"
+                << " (absolute: the equation of state would take the"
+                << " source's dynamic coefficient, a sound speed that"
+                << " changes from particle to particle), or compressibility 0"
+                << exit(FatalIOError);
         }
         if (relaxation_ < 0 || relaxation_ > 1 || compressibility_ < 0)
         {
