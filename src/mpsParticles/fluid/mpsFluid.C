@@ -463,8 +463,9 @@ Foam::mpsFluid::rowSource Foam::mpsFluid::source
                 // Khayyer & Gotoh (2011): the rate term scaled up by the
                 // density error's size, and the density error corrected
                 // with the coefficient |dt (1/n0) Dn/Dt|, so that both
-                // parts scale as 1/dt, as the rate term does
-                const scalar gamma = mag(dt*nRate);
+                // parts scale as 1/dt, as the rate term does; the fixed
+                // relaxation beside it (0 for the paper's form)
+                const scalar gamma = relaxation_ + mag(dt*nRate);
                 s.rhs =
                     -(1 + mag(error))*rho_/dt*nRate + gamma*densitySource;
                 s.gamma = gamma;
