@@ -744,3 +744,70 @@ TEST_CASE("error-compensating source: Khayyer & Gotoh (2011)'s parts, each scali
     );
     CHECK(rateForm.soundSpeed() == Approx(316.228).epsilon(1e-5));
 }
+
+
+TEST_CASE("relaxationTime: the density term as a share of the error per unit time, scaling as 1/dt")
+{
+    // relaxationTime tau makes the relaxation dt/tau: at dt = 2e-5 s and
+    // tau = 4e-4 s the sources are those of relaxation 0.05 (to round-off),
+    // and halving the step doubles every source (the mixed and the
+    // error-compensating source alike), as the rate terms do; a fixed
+    // relaxation does not (the test above). The block and its motion are
+    // the error-compensating test's: compressed by 1% and converging.
+    const label N = 24;
+    const scalar dt = 2e-5, eps = 2.0;
+    auto sources = [&](const std::string& source, const std::string& ppe, const scalar step)
+    {
+        ppeBlock blk(N, N, ppe, 0.99, source);
+        const vector2D xc(0.5*N*0.99*blk.l0, 0.5*N*0.99*blk.l0);
+        forAll(blk.cloud.x(), i)
+        {
+            blk.cloud.U()[i] = -eps*(blk.cloud.x()[i] - xc);
+        }
+        ppeMatrix A;
+        Eigen::VectorXd b, sol;
+        blk.fluid->pressureSystem(step, A, b, sol);
+        return b;
+    };
+    for (const std::string source : {"mixed", "higherOrder", "errorCompensating"})
+    {
+        INFO("source " << source);
+        const Eigen::VectorXd fixed(sources(source, "relaxation 0.05;", dt));
+        const Eigen::VectorXd b1(sources(source, "relaxationTime 4e-4;", dt));
+        const Eigen::VectorXd b2(sources(source, "relaxationTime 4e-4;", 0.5*dt));
+        CHECK(fixed.norm() > 0);
+        CHECK((b1 - fixed).norm() < 1e-12*fixed.norm());
+        CHECK((b2 - 2*b1).norm() < 1e-12*(2*b1).norm());
+    }
+
+    // Entries: one of relaxation and relaxationTime; not for the
+    // numberDensity source; compressible only in the rate form
+    mpsCloud c;
+    c.addRegion("none");
+    const boundBox domain(point(-1, -1, -1), point(1, 1, 1));
+    CHECK_THROWS_WITH
+    (
+        mpsFluid(c, ppeFluidDict("relaxation 0.05; relaxationTime 1e-3;"), domain),
+        Contains("give one of them")
+    );
+    CHECK_THROWS_WITH
+    (
+        mpsFluid(c, ppeFluidDict("relaxationTime 0;"), domain),
+        Contains("must be positive")
+    );
+    CHECK_THROWS_WITH
+    (
+        mpsFluid(c, ppeFluidDict("relaxationTime 1e-3;", "numberDensity"), domain),
+        Contains("not to numberDensity")
+    );
+    CHECK_THROWS_WITH
+    (
+        mpsFluid(c, ppeFluidDict("relaxationTime 1e-3; compressibility 1e-8;"), domain),
+        Contains("compressibilityForm rate")
+    );
+    mpsFluid rate
+    (
+        c, ppeFluidDict("relaxationTime 1e-3; compressibility 1e-8; compressibilityForm rate;"), domain
+    );
+    CHECK(rate.soundSpeed() == Approx(316.228).epsilon(1e-5));
+}

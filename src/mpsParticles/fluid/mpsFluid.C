@@ -70,8 +70,9 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
         (
             *ppe,
             {
-                "source", "surfaceCondition", "relaxation", "compressibility",
-                "compressibilityForm", "fillVoids", "clampNegative"
+                "source", "surfaceCondition", "relaxation", "relaxationTime",
+                "compressibility", "compressibilityForm", "fillVoids",
+                "clampNegative"
             },
             "ppe"
         );
@@ -423,6 +424,11 @@ Foam::mpsFluid::rowSource Foam::mpsFluid::source
     // that fills the deficit (n0 - n)/n0 within the step
     const scalar deficit = fillVoids_ ? max(n0N_ - n, scalar(0))/n0N_ : 0;
 
+    // The fixed relaxation, or dt/relaxationTime (a share of the error per
+    // unit time, at most all of it in one step)
+    const scalar relaxation =
+        relaxationTime_ > 0 ? min(dt/relaxationTime_, scalar(1)) : relaxation_;
+
     rowSource s;
     switch (source_)
     {
@@ -439,8 +445,8 @@ Foam::mpsFluid::rowSource Foam::mpsFluid::source
             {
                 div = min(div + deficit/dt, scalar(0));
             }
-            s.rhs = rho_/dt*div + relaxation_*densitySource;
-            s.gamma = relaxation_;
+            s.rhs = rho_/dt*div + relaxation*densitySource;
+            s.gamma = relaxation;
             break;
         }
         case sourceType::higherOrder:
@@ -455,8 +461,8 @@ Foam::mpsFluid::rowSource Foam::mpsFluid::source
             }
             if (source_ == sourceType::higherOrder)
             {
-                s.rhs = -rho_/dt*nRate + relaxation_*densitySource;
-                s.gamma = relaxation_;
+                s.rhs = -rho_/dt*nRate + relaxation*densitySource;
+                s.gamma = relaxation;
             }
             else
             {
@@ -465,7 +471,7 @@ Foam::mpsFluid::rowSource Foam::mpsFluid::source
                 // with the coefficient |dt (1/n0) Dn/Dt|, so that both
                 // parts scale as 1/dt, as the rate term does; the fixed
                 // relaxation beside it (0 for the paper's form)
-                const scalar gamma = relaxation_ + mag(dt*nRate);
+                const scalar gamma = relaxation + mag(dt*nRate);
                 s.rhs =
                     -(1 + mag(error))*rho_/dt*nRate + gamma*densitySource;
                 s.gamma = gamma;
@@ -669,6 +675,7 @@ Foam::mpsFluid::mpsFluid
     source_(sourceType::mixed),
     surfaceCondition_(surfaceConditionType::flagged),
     relaxation_(0.05),
+    relaxationTime_(0),
     compressibility_(0),
     compressibilityForm_(compressibilityFormType::absolute),
     fillVoids_(false),
@@ -726,6 +733,17 @@ Foam::mpsFluid::mpsFluid
             "surfaceCondition", ppe, surfaceCondition_
         );
         relaxation_ = ppe.getOrDefault<scalar>("relaxation", relaxation_);
+        if (ppe.found("relaxationTime"))
+        {
+            relaxationTime_ = ppe.get<scalar>("relaxationTime");
+            if (!(relaxationTime_ > 0) || ppe.found("relaxation"))
+            {
+                FatalIOErrorInFunction(ppe)
+                    << "Entry 'relaxationTime' [s] must be positive (got "
+                    << relaxationTime_ << ") and stands in place of"
+                    << " 'relaxation': give one of them" << exit(FatalIOError);
+            }
+        }
         compressibility_ =
             ppe.getOrDefault<scalar>("compressibility", compressibility_);
         compressibilityForm_ = compressibilityFormTypeNames.getOrDefault
@@ -741,19 +759,30 @@ Foam::mpsFluid::mpsFluid
                 << " extrapolated (flagged sets the particles short of"
                 << " neighbours to p = 0)" << exit(FatalIOError);
         }
+        if (relaxationTime_ > 0 && source_ == sourceType::numberDensity)
+        {
+            FatalIOErrorInFunction(ppe)
+                << "Entry 'relaxationTime' applies to the sources mixed,"
+                << " higherOrder and errorCompensating, not to "
+                << sourceTypeNames[source_] << exit(FatalIOError);
+        }
+        const bool dynamicRelaxation =
+            source_ == sourceType::errorCompensating || relaxationTime_ > 0;
         if
         (
-            source_ == sourceType::errorCompensating
+            dynamicRelaxation
          && compressibility_ > 0
-         && compressibilityForm_ == compressibilityFormType::absolute
+         && !rateForm()
         )
         {
             FatalIOErrorInFunction(ppe)
-                << "Entry 'source errorCompensating' with 'compressibility' "
-                << compressibility_ << " needs 'compressibilityForm rate'"
-                << " (absolute: the equation of state would take the"
-                << " source's dynamic coefficient, a sound speed that"
-                << " changes from particle to particle), or compressibility 0"
+                << "Entry 'source " << sourceTypeNames[source_] << "'"
+                << (relaxationTime_ > 0 ? " with 'relaxationTime'" : "")
+                << " and 'compressibility' " << compressibility_
+                << " need 'compressibilityForm rate' (absolute: the"
+                << " equation of state would take the density term's"
+                << " coefficient, which changes with the step or from"
+                << " particle to particle), or compressibility 0"
                 << exit(FatalIOError);
         }
         if (relaxation_ < 0 || relaxation_ > 1 || compressibility_ < 0)
@@ -768,6 +797,17 @@ Foam::mpsFluid::mpsFluid
 
     Info<< "Pressure equation: source " << sourceTypeNames[source_]
         << ", surfaceCondition " << surfaceConditionTypeNames[surfaceCondition_];
+    if (source_ != sourceType::numberDensity)
+    {
+        if (relaxationTime_ > 0)
+        {
+            Info<< ", relaxationTime " << relaxationTime_ << " s";
+        }
+        else
+        {
+            Info<< ", relaxation " << relaxation_;
+        }
+    }
     if (compressibility_ > 0)
     {
         Info<< ", compressibility " << compressibility_ << " 1/Pa ("
