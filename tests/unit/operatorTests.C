@@ -320,6 +320,8 @@ struct ppeBlock
     mpsCloud cloud;
     autoPtr<mpsFluid> fluid;
     scalar l0 = 0.01;
+    label nx_, ny_;
+    scalar scale_;
 
     ppeBlock
     (
@@ -329,6 +331,10 @@ struct ppeBlock
         const scalar scale = 1,
         const std::string& source = "mixed"
     )
+    :
+        nx_(nx),
+        ny_(ny),
+        scale_(scale)
     {
         const label r = cloud.addRegion("block");
         for (label j = 0; j < ny; ++j)
@@ -346,6 +352,30 @@ struct ppeBlock
             )
         );
         fluid->evaluate();
+    }
+
+    // The block's centre
+    vector2D centre() const
+    {
+        return 0.5*scale_*l0*vector2D(nx_, ny_);
+    }
+
+    // A uniform convergence about the centre, u = -eps (x - xc)
+    void converge(const scalar eps)
+    {
+        forAll(cloud.x(), i)
+        {
+            cloud.U()[i] = -eps*(cloud.x()[i] - centre());
+        }
+    }
+
+    // The PPE's right-hand side at step dt, in rows
+    Eigen::VectorXd rhs(const scalar dt)
+    {
+        ppeMatrix A;
+        Eigen::VectorXd b, sol;
+        fluid->pressureSystem(dt, A, b, sol);
+        return b;
     }
 
     // The pressure that solves the block's PPE (direct solver), in rows
@@ -637,10 +667,11 @@ TEST_CASE("error-compensating source: Khayyer & Gotoh (2011)'s parts, each scali
     //   -(1 + |e|)(rho/dt) r - |dt r| (rho/dt^2) e,  r = (1/n0) Dn/Dt,
     // computed here from numberDensityRate independently of the assembly
     // (relaxation 0, the paper's form; with a relaxation gamma the density
-    // term's coefficient is gamma + |dt r|). These parts scale as 1/dt: halving the step doubles every source to
-    // round-off (the pressure impulse p dt of a state does not hang on the
-    // step); a fixed relaxation, a fraction of the error per step, scales
-    // as 1/dt^2 and does not. At rest the paper's form is zero (a density
+    // term's coefficient is gamma + |dt r|). These parts scale as 1/dt:
+    // halving the step doubles every source to round-off (the pressure
+    // impulse p dt of a state does not hang on the step); a fixed
+    // relaxation, a fraction of the error per step, scales as 1/dt^2 and
+    // does not. At rest the paper's form is zero (a density
     // error at rest is left as it is), where the relaxation pushes.
     const label N = 24;
     const scalar dt = 2e-5, eps = 2.0, rho = 1000;
@@ -650,15 +681,8 @@ TEST_CASE("error-compensating source: Khayyer & Gotoh (2011)'s parts, each scali
     )
     {
         ppeBlock blk(N, N, "relaxation " + std::to_string(relaxation) + ";", 0.99, source);
-        const vector2D xc(0.5*N*0.99*blk.l0, 0.5*N*0.99*blk.l0);
-        forAll(blk.cloud.x(), i)
-        {
-            blk.cloud.U()[i] = -speed*(blk.cloud.x()[i] - xc);
-        }
-        ppeMatrix A;
-        Eigen::VectorXd b, sol;
-        blk.fluid->pressureSystem(step, A, b, sol);
-        return b;
+        blk.converge(speed);
+        return blk.rhs(step);
     };
 
     // The formula, at the interior particles (full neighbourhoods)
@@ -666,14 +690,9 @@ TEST_CASE("error-compensating source: Khayyer & Gotoh (2011)'s parts, each scali
     {
         INFO("relaxation " << relaxation);
         ppeBlock blk(N, N, "relaxation " + std::to_string(relaxation) + ";", 0.99, "errorCompensating");
-        const vector2D xc(0.5*N*0.99*blk.l0, 0.5*N*0.99*blk.l0);
-        forAll(blk.cloud.x(), i)
-        {
-            blk.cloud.U()[i] = -eps*(blk.cloud.x()[i] - xc);
-        }
-        ppeMatrix A;
-        Eigen::VectorXd b, sol;
-        blk.fluid->pressureSystem(dt, A, b, sol);
+        blk.converge(eps);
+        const Eigen::VectorXd b(blk.rhs(dt));
+        const vector2D xc(blk.centre());
         const scalar re = 2.1*blk.l0;
         autoPtr<mpsKernel> k(mpsKernel::New(test::dict("kernel { type original; }"), re));
         const neighbourList nbrs(blk.cloud.x(), re);
@@ -759,15 +778,8 @@ TEST_CASE("relaxationTime: the density term as a share of the error per unit tim
     auto sources = [&](const std::string& source, const std::string& ppe, const scalar step)
     {
         ppeBlock blk(N, N, ppe, 0.99, source);
-        const vector2D xc(0.5*N*0.99*blk.l0, 0.5*N*0.99*blk.l0);
-        forAll(blk.cloud.x(), i)
-        {
-            blk.cloud.U()[i] = -eps*(blk.cloud.x()[i] - xc);
-        }
-        ppeMatrix A;
-        Eigen::VectorXd b, sol;
-        blk.fluid->pressureSystem(step, A, b, sol);
-        return b;
+        blk.converge(eps);
+        return blk.rhs(step);
     };
     for (const std::string source : {"mixed", "higherOrder", "errorCompensating"})
     {
