@@ -736,12 +736,18 @@ Foam::mpsFluid::mpsFluid
         if (ppe.found("relaxationTime"))
         {
             relaxationTime_ = ppe.get<scalar>("relaxationTime");
-            if (!(relaxationTime_ > 0) || ppe.found("relaxation"))
+            if (ppe.found("relaxation"))
             {
                 FatalIOErrorInFunction(ppe)
-                    << "Entry 'relaxationTime' [s] must be positive (got "
-                    << relaxationTime_ << ") and stands in place of"
-                    << " 'relaxation': give one of them" << exit(FatalIOError);
+                    << "Entries 'relaxation' and 'relaxationTime': the one"
+                    << " stands in place of the other, give one of them"
+                    << exit(FatalIOError);
+            }
+            if (!(relaxationTime_ > 0))
+            {
+                FatalIOErrorInFunction(ppe)
+                    << "Entry 'relaxationTime' [s] must be positive, got "
+                    << relaxationTime_ << exit(FatalIOError);
             }
         }
         compressibility_ =
