@@ -124,12 +124,14 @@ Foam::particleGenerator::particleGenerator
 (
     const dictionary& particleDict,
     const scalar fluidSpacing,
-    const scalar structureSpacing
+    const scalar structureSpacing,
+    const scalar wallSupport
 )
 :
     dict_(particleDict),
     fluidSpacing_(fluidSpacing),
-    structureSpacing_(structureSpacing)
+    structureSpacing_(structureSpacing),
+    wallSupport_(wallSupport)
 {}
 
 
@@ -288,6 +290,23 @@ void Foam::particleGenerator::generate
                     << "Entry 'dummyLayers' of region " << name << " is "
                     << dummyLayers << "; valid: 0 to " << nLayers - 1
                     << " (the region has " << nLayers << " layers)"
+                    << exit(FatalIOError);
+            }
+            // The dummies at 1, 2, ... spacings behind the wall layer must
+            // reach the number-density radius
+            const label needed = label(std::floor(wallSupport_/spacing + 1e-6));
+            if (dummyLayers > 0 && dummyLayers < needed)
+            {
+                FatalIOErrorInFunction(rDict)
+                    << "Entry 'dummyLayers' of region " << name << " is "
+                    << dummyLayers << "; valid: " << needed << " or more"
+                    << " (and 'layers' at least " << needed + 1 << ")."
+                    << nl << "The number-density kernel's radius "
+                    << wallSupport_/spacing << " spacings (re.numberDensity"
+                    << " of constant/mpsProperties) reaches " << needed
+                    << " layers behind the wall layer: with fewer dummies"
+                    << " its wall particles' number density is short and"
+                    << " the free-surface test sets them to p = 0."
                     << exit(FatalIOError);
             }
         }
