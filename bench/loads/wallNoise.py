@@ -107,6 +107,8 @@ events = [
     k for k in range(1, len(T))
     if edge[k] > edge[k - 1] + 1e-9 and t0 < T[k] < t1 - 20*dt
 ]
+if len(events) < 2:
+    sys.exit("  the edge advances fewer than twice in 6-19 ms: no average")
 hI = highPass(parts[:, -1])
 rmsI = np.sqrt(np.mean(hI[window]**2))
 lags = range(-10, 21, 2)

@@ -293,8 +293,9 @@ void Foam::particleGenerator::generate
                     << exit(FatalIOError);
             }
             // The dummies at 1, 2, ... spacings behind the wall layer must
-            // reach the number-density radius
-            const label needed = label(std::floor(wallSupport_/spacing + 1e-6));
+            // hold every layer closer than the number-density radius (the
+            // kernels vanish at re)
+            const label needed = label(std::floor(wallSupport_/spacing - 1e-6));
             if (dummyLayers > 0 && dummyLayers < needed)
             {
                 FatalIOErrorInFunction(rDict)
@@ -305,8 +306,9 @@ void Foam::particleGenerator::generate
                     << wallSupport_/spacing << " spacings (re.numberDensity"
                     << " of constant/mpsProperties) reaches " << needed
                     << " layers behind the wall layer: with fewer dummies"
-                    << " its wall particles' number density is short and"
-                    << " the free-surface test sets them to p = 0."
+                    << " its wall particles' number density is short (and"
+                    << " the number-density wall test, wallBeta, sets them"
+                    << " to p = 0)."
                     << exit(FatalIOError);
             }
         }
