@@ -830,7 +830,7 @@ Foam::mpsFluid::mpsFluid
         Info<< ", incompressible (compressibility 0)" << nl;
     }
 
-    freeSurface_ = freeSurfaceModel::New(dict);
+    freeSurface_ = freeSurfaceModel::New(dict, l0_);
     collision_ = collisionModel::New(dict);
     shifting_ = particleShifting::New(dict);
     gradient_ = pressureGradient::New(dict);

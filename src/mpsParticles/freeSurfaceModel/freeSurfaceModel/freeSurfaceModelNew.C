@@ -18,7 +18,8 @@ License
 
 Foam::autoPtr<Foam::freeSurfaceModel> Foam::freeSurfaceModel::New
 (
-    const dictionary& mpsProperties
+    const dictionary& mpsProperties,
+    const scalar l0
 )
 {
     const dictionary& dict =
@@ -40,7 +41,7 @@ Foam::autoPtr<Foam::freeSurfaceModel> Foam::freeSurfaceModel::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<freeSurfaceModel>(cstrIter()(dict));
+    return autoPtr<freeSurfaceModel>(cstrIter()(dict, mpsProperties, l0));
 }
 
 

@@ -35,9 +35,56 @@ Foam::freeSurfaceModels::improved::wallTestTypeNames
 });
 
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::freeSurfaceModels::improved::wallNumberDensityTest
+(
+    const mpsCloud& cloud,
+    const neighbourList& nbrs,
+    UList<bool>& surface
+) const
+{
+    const mpsKernel& kernel = wallKernel_();
+    if (kernel.re() > nbrs.radius()*(1 + 1e-9))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'wallRadius' (" << kernel.re() << " m) exceeds the"
+            << " neighbour search radius " << nbrs.radius() << " m, the"
+            << " largest of re's numberDensity, gradient and laplacian:"
+            << " valid up to that radius" << exit(FatalIOError);
+    }
+
+    const UList<vector2D>& x = cloud.x();
+    const UList<particleKind>& kinds = cloud.kind();
+    const labelList& offsets = nbrs.offsets();
+    const labelList& nbr = nbrs.neighbours();
+    const scalar limit = wallBeta_*wallN0_;
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < cloud.size(); ++i)
+    {
+        if (kinds[i] != particleKind::wall)
+        {
+            continue;
+        }
+        scalar n = 0;
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            n += kernel.w(max(mag(x[nbr[k]] - x[i]), minR_));
+        }
+        surface[i] = (n < limit);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::freeSurfaceModels::improved::improved(const dictionary& dict)
+Foam::freeSurfaceModels::improved::improved
+(
+    const dictionary& dict,
+    const dictionary& mpsProperties,
+    const scalar l0
+)
 :
     freeSurfaceModel(dict),
     beta_(readFraction("beta", 0.8)),
@@ -51,14 +98,39 @@ Foam::freeSurfaceModels::improved::improved(const dictionary& dict)
             wallTestType::numberDensity
         )
     ),
-    wallBeta_(readFraction("wallBeta", 0.97))
+    wallBeta_(readFraction("wallBeta", 0.97)),
+    wallKernel_(nullptr),
+    wallN0_(0),
+    minR_(1e-3*l0)
 {
     inputChecks::keywords
     (
         dict,
-        {"type", "beta", "asymmetry", "wallTest", "wallBeta"},
+        {"type", "beta", "asymmetry", "wallTest", "wallBeta", "wallRadius"},
         "freeSurface improved"
     );
+    if (dict.found("wallRadius"))
+    {
+        // The kernel radii's own range (re, mpsFluid)
+        const scalar radius = inputChecks::value(dict, "wallRadius")
+            .get<scalar>("wallRadius");
+        if (!(radius > 1 && radius <= 10))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'wallRadius' (the wall test's kernel radius in"
+                << " units of l0) must lie in (1, 10], got " << radius
+                << exit(FatalIOError);
+        }
+        if (wallTest_ != wallTestType::numberDensity)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'wallRadius' sizes the numberDensity wall test,"
+                << " not wallTest " << wallTestTypeNames[wallTest_]
+                << exit(FatalIOError);
+        }
+        wallKernel_ = mpsKernel::New(mpsProperties, radius*l0);
+        wallN0_ = wallKernel_->latticeNumberDensity(l0);
+    }
 }
 
 
@@ -86,6 +158,10 @@ void Foam::freeSurfaceModels::improved::identify
             cloud, nbrs, w, n0, F0, beta_, asymmetry_, particleKind::wall,
             surface, true
         );
+    }
+    else if (wallKernel_.valid())
+    {
+        wallNumberDensityTest(cloud, nbrs, surface);
     }
     else
     {

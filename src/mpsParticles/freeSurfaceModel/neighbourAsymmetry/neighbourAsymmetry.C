@@ -29,7 +29,12 @@ namespace freeSurfaceModels
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::freeSurfaceModels::neighbourAsymmetry::neighbourAsymmetry(const dictionary& dict)
+Foam::freeSurfaceModels::neighbourAsymmetry::neighbourAsymmetry
+(
+    const dictionary& dict,
+    const dictionary&,
+    const scalar
+)
 :
     freeSurfaceModel(dict),
     beta_(readFraction("beta", 0.8)),
