@@ -48,9 +48,9 @@ void Foam::freeSurfaceModels::improved::wallNumberDensityTest
     if (kernel.re() > nbrs.radius()*(1 + 1e-9))
     {
         FatalIOErrorInFunction(dict_)
-            << "Entry 'wallRadius' (" << kernel.re() << " m) exceeds the"
-            << " neighbour search radius " << nbrs.radius() << " m, the"
-            << " largest of re's numberDensity, gradient and laplacian:"
+            << "Entry 'wallRadius' " << kernel.re()/l0_ << " (in l0) exceeds"
+            << " the neighbour search radius " << nbrs.radius()/l0_
+            << ", the largest of re's numberDensity, gradient and laplacian:"
             << " valid up to that radius" << exit(FatalIOError);
     }
 
@@ -70,7 +70,7 @@ void Foam::freeSurfaceModels::improved::wallNumberDensityTest
         scalar n = 0;
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
-            n += kernel.w(max(mag(x[nbr[k]] - x[i]), minR_));
+            n += kernel.w(max(mag(x[nbr[k]] - x[i]), 1e-3*l0_));
         }
         surface[i] = (n < limit);
     }
@@ -101,7 +101,7 @@ Foam::freeSurfaceModels::improved::improved
     wallBeta_(readFraction("wallBeta", 0.97)),
     wallKernel_(nullptr),
     wallN0_(0),
-    minR_(1e-3*l0)
+    l0_(l0)
 {
     inputChecks::keywords
     (
