@@ -451,6 +451,121 @@ TEST_CASE("free-surface conditions: where a surface particle's row puts p = 0")
 }
 
 
+TEST_CASE("continuousWalls: the fluid's surface rows are p = 0, the walls' rows are solved with air sites")
+{
+    // A tank's corner (bottom and left wall, each with two dummy layers)
+    // holding water 12 x 8 particles at rest; the left wall rises 8 rows
+    // above the water (dry). Under continuousWalls the fluid particles the
+    // free-surface model flags are rows p_i = 0, as under flagged, and no
+    // wall particle is: every wall row, the dry ones too, is the row the
+    // continuous condition gives it (the missing sites air at p = 0), so
+    // that a wall's row changes smoothly as the water reaches it
+    const scalar l0 = 0.01;
+    const label nx = 12, ny = 8, nWall = 16;
+    auto corner = [&](mpsCloud& c)
+    {
+        const label r = c.addRegion("corner");
+        for (label j = 0; j < ny; ++j)
+        {
+            for (label i = 0; i < nx; ++i)
+            {
+                c.append(l0*vector2D(i + 0.5, j + 0.5), particleKind::fluid, r, l0);
+            }
+        }
+        for (label layer = 0; layer < 3; ++layer)
+        {
+            const particleKind kind =
+                layer == 0 ? particleKind::wall : particleKind::dummy;
+            for (label i = -layer - 1; i < nx + 3; ++i)
+            {
+                c.append(l0*vector2D(i + 0.5, -layer - 0.5), kind, r, l0);
+            }
+            for (label j = -layer; j < nWall; ++j)
+            {
+                c.append(l0*vector2D(-layer - 0.5, j + 0.5), kind, r, l0);
+            }
+        }
+    };
+    // Each particle's row: its diagonal, the number of its other entries,
+    // and its right-hand side (NaN: no row)
+    struct rows
+    {
+        List<scalar> diag, rhs;
+        labelList offDiag;
+        List<bool> surface;
+    };
+    auto system = [&](const std::string& condition)
+    {
+        mpsCloud c;
+        corner(c);
+        mpsFluid fluid
+        (
+            c, ppeFluidDict("surfaceCondition " + condition + ";"),
+            boundBox(point(-1, -1, -1), point(1, 1, 1))
+        );
+        fluid.evaluate();
+        ppeMatrix A;
+        Eigen::VectorXd b, sol;
+        const labelList& row = fluid.pressureSystem(2e-5, A, b, sol);
+        rows s;
+        s.diag.setSize(c.size(), NAN);
+        s.rhs.setSize(c.size(), NAN);
+        s.offDiag.setSize(c.size(), -1);
+        s.surface = c.surface();
+        forAll(c.x(), i)
+        {
+            if (row[i] < 0) continue;
+            s.offDiag[i] = 0;
+            s.rhs[i] = b[row[i]];
+            for (ppeMatrix::InnerIterator it(A, row[i]); it; ++it)
+            {
+                if (it.col() == row[i]) s.diag[i] = it.value();
+                else ++s.offDiag[i];
+            }
+        }
+        return std::make_pair(s, List<particleKind>(c.kind()));
+    };
+
+    const auto flagged = system("flagged");
+    const auto continuous = system("continuous");
+    const auto walls = system("continuousWalls");
+    const List<particleKind>& kind = walls.second;
+    label nFluidZero = 0, nWalls = 0, nDryWalls = 0;
+    forAll(kind, i)
+    {
+        INFO("particle " << i);
+        const rows& w = walls.first;
+        if (kind[i] == particleKind::fluid)
+        {
+            // as flagged: the flagged particles' rows are p_i = 0
+            CHECK(w.surface[i] == flagged.first.surface[i]);
+            CHECK((w.offDiag[i] == 0) == w.surface[i]);
+            if (w.surface[i])
+            {
+                CHECK(w.rhs[i] == 0);
+                ++nFluidZero;
+            }
+        }
+        else if (kind[i] == particleKind::wall)
+        {
+            ++nWalls;
+            nDryWalls += flagged.first.surface[i];
+            // never a zero row; the continuous condition's diagonal
+            CHECK(w.offDiag[i] > 0);
+            CHECK(w.diag[i] == Approx(continuous.first.diag[i]).epsilon(1e-12));
+            if (flagged.first.surface[i])
+            {
+                // dry under flagged: there a row p_i = 0
+                CHECK(flagged.first.offDiag[i] == 0);
+            }
+        }
+    }
+    CHECK(nFluidZero >= nx);            // the top row at least
+    CHECK(nWalls == (nx + 4) + nWall);
+    CHECK(nDryWalls >= nWall - ny - 1); // the left wall above the water
+}
+
+
 TEST_CASE("weak compressibility: the rate form leaves a steady pressure as it is, the absolute form pulls it down")
 {
     // The block expands uniformly, u = eps (x - xc): a steady divergence

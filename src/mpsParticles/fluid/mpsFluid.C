@@ -34,6 +34,7 @@ Foam::mpsFluid::surfaceConditionTypeNames
     { surfaceConditionType::flagged, "flagged" },
     { surfaceConditionType::continuous, "continuous" },
     { surfaceConditionType::extrapolated, "extrapolated" },
+    { surfaceConditionType::continuousWalls, "continuousWalls" },
 });
 
 const Foam::Enum<Foam::mpsFluid::compressibilityFormType>
@@ -246,10 +247,8 @@ void Foam::mpsFluid::assemblePressure
     const UList<vector2D>& x = cloud_.x();
     const UList<vector2D>& U = cloud_.U();
     const UList<scalar>& n = cloud_.n();
-    // continuous and extrapolated: no row is set to zero, the missing
-    // lattice sites are air
-    const bool airSites =
-        surfaceCondition_ != surfaceConditionType::flagged;
+    // continuous and extrapolated (continuousWalls: the walls): no row is
+    // set to zero, the missing lattice sites are air (airSites(i))
     // The pressure the missing lattice sites carry, relative to p_i: 0
     // (continuous) or the mirror image -p_i (extrapolated), so that the
     // missing weight counts once or twice on the diagonal
@@ -330,6 +329,7 @@ void Foam::mpsFluid::assemblePressure
             continue;
         }
 
+        const bool air = airSites(i);
         scalar diag = 0;
         scalar div = 0;
         scalar nL = 0;
@@ -357,7 +357,7 @@ void Foam::mpsFluid::assemblePressure
                 div += ((U[j] - U[i]) & r)*wN_[k]/max(magSqr(r), minR2_);
             }
         }
-        if (airSites)
+        if (air)
         {
             // The lattice sites missing around i are air at p = 0: the
             // Laplacian's weight they would carry, n0 - sum_j w_ij (dummies
@@ -367,7 +367,7 @@ void Foam::mpsFluid::assemblePressure
         }
 
         // The source, and the coefficient gamma of its density error
-        const rowSource s(source(i, divCoeff*div, dt, airSites));
+        const rowSource s(source(i, divCoeff*div, dt, air));
         diag += rate ? (1 + s.gamma)*kappa : kappa;
         b[row] = -s.rhs + oldComp*p[i];
         sol[row] = p[i];
@@ -421,8 +421,10 @@ Foam::mpsFluid::rowSource Foam::mpsFluid::source
     // With fillVoids, neighbours that approach a particle short of
     // neighbours (n < n0) fill its void before they compress the water:
     // the compression rate the source corrects is what exceeds the rate
-    // that fills the deficit (n0 - n)/n0 within the step
-    const scalar deficit = fillVoids_ ? max(n0N_ - n, scalar(0))/n0N_ : 0;
+    // that fills the deficit (n0 - n)/n0 within the step (the rows whose
+    // missing sites are air: under continuousWalls the walls')
+    const scalar deficit =
+        (fillVoids_ && airSites) ? max(n0N_ - n, scalar(0))/n0N_ : 0;
 
     // The fixed relaxation, or dt/relaxationTime (a share of the error per
     // unit time, at most all of it in one step)
@@ -761,9 +763,10 @@ Foam::mpsFluid::mpsFluid
         if (fillVoids_ && surfaceCondition_ == surfaceConditionType::flagged)
         {
             FatalIOErrorInFunction(ppe)
-                << "Entry 'fillVoids' needs surfaceCondition continuous or"
-                << " extrapolated (flagged sets the particles short of"
-                << " neighbours to p = 0)" << exit(FatalIOError);
+                << "Entry 'fillVoids' needs surfaceCondition continuous,"
+                << " extrapolated or continuousWalls (flagged sets the"
+                << " particles short of neighbours to p = 0)"
+                << exit(FatalIOError);
         }
         if (relaxationTime_ > 0 && source_ == sourceType::numberDensity)
         {
