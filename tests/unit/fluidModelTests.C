@@ -96,6 +96,30 @@ TEST_CASE("pairwise collision keeps momentum and parts approaching pairs")
     const label nPairs = model->correct(cloud, nbrs, l0, dt, x, U);
     REQUIRE(nPairs > 10);           // the test exercises collisions
 
+    // The count is of pairs, each once (fluidSummary's nCollisions): closer
+    // than alpha l0 and approaching, by hand over all pairs
+    label nByHand = 0;
+    forAll(cloud.x(), i)
+    {
+        for (label j = i + 1; j < cloud.size(); ++j)
+        {
+            const vector2D rij(cloud.x()[j] - cloud.x()[i]);
+            const bool fluidPair =
+                cloud.kind()[i] == particleKind::fluid
+             || cloud.kind()[j] == particleKind::fluid;
+            if
+            (
+                fluidPair
+             && magSqr(rij) < sqr(0.85*l0)
+             && ((cloud.U()[i] - cloud.U()[j]) & rij) > 0
+            )
+            {
+                ++nByHand;
+            }
+        }
+    }
+    CHECK(nPairs == nByHand);
+
     // Fluid-fluid exchanges cancel; only fluid-wall pairs change momentum
     vector2D after(Zero);
     vector2D wallImpulse(Zero);

@@ -69,6 +69,8 @@ Foam::label Foam::collisionModels::pairwise::correct
 ) const
 {
     const UList<particleKind>& kind = cloud.kind();
+    const UList<bool>& halo = cloud.halo();
+    const UList<label>& id = cloud.id();
     const labelList& offsets = nbrs.offsets();
     const labelList& nbr = nbrs.neighbours();
     const scalar d2 = sqr(alpha_*l0);
@@ -102,7 +104,12 @@ Foam::label Foam::collisionModels::pairwise::correct
             const scalar massFactor =
                 (kind[j] == particleKind::fluid ? 0.5 : 1.0);
             dUi -= ((1 + e_)*massFactor*approach/r2)*r;
-            ++nPairs;
+            // Each pair once: a halo's correction is its owner's, and a
+            // pair of fluid particles is the one of lower id's
+            if (!halo[i] && (kind[j] != particleKind::fluid || id[i] < id[j]))
+            {
+                ++nPairs;
+            }
         }
         dU[i] = dUi;
     }
