@@ -120,6 +120,7 @@ int main(int argc, char *argv[])
             // (under -parallel each rank writes the particles in its cells)
             fluid.localise();
             output.write(cloud);
+            fluid.restartPoint();
             lastWritten = runTime.timeName();
         }
 

@@ -339,4 +339,10 @@ Foam::pressureSolver::performance Foam::pressureSolvers::BoomerAMG::solve
 }
 
 
+void Foam::pressureSolvers::BoomerAMG::restartPoint()
+{
+    hierarchy_->clear();
+}
+
+
 // ************************************************************************* //
