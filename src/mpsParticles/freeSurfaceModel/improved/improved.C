@@ -59,6 +59,7 @@ void Foam::freeSurfaceModels::improved::wallNumberDensityTest
     const labelList& offsets = nbrs.offsets();
     const labelList& nbr = nbrs.neighbours();
     const scalar limit = wallBeta_*wallN0_;
+    const scalar minR = 1e-3*l0_;
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < cloud.size(); ++i)
@@ -70,7 +71,7 @@ void Foam::freeSurfaceModels::improved::wallNumberDensityTest
         scalar n = 0;
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
-            n += kernel.w(max(mag(x[nbr[k]] - x[i]), 1e-3*l0_));
+            n += kernel.w(max(mag(x[nbr[k]] - x[i]), minR));
         }
         surface[i] = (n < limit);
     }
