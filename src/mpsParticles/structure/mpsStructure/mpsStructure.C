@@ -220,8 +220,9 @@ Foam::scalar Foam::mpsStructure::spacing
         dict,
         {
             "structureModel", "rho", "E", "nu", "planeStrain", "spacing",
-            "spacingRatio", "nSubSteps", "deltaT", "damping", "g",
-            "clamped", "clampAt", "clampedVelocity", "bodyMotion",
+            "spacingRatio", "nSubSteps", "deltaT", "damping",
+            "stiffnessDamping", "g", "clamped", "clampAt",
+            "clampedVelocity", "bodyMotion",
             "initialVelocity", "loads", "coupling", "releaseTime"
         },
         "constant/structureProperties"
@@ -231,8 +232,8 @@ Foam::scalar Foam::mpsStructure::spacing
         dict,
         {
             "rho", "E", "nu", "planeStrain", "spacing", "spacingRatio",
-            "nSubSteps", "deltaT", "damping", "g", "clamped", "clampAt",
-            "clampedVelocity"
+            "nSubSteps", "deltaT", "damping", "stiffnessDamping", "g",
+            "clamped", "clampAt", "clampedVelocity"
         }
     );
     inputChecks::exclusive(dict, {"spacing", "spacingRatio"});

@@ -149,6 +149,12 @@ void Foam::structureModel::clampedInternalForces
 void Foam::structureModel::updateAcceleration()
 {
     clampedInternalForces(a_, alpha_);
+    if (stiffnessDamping_ > 0)
+    {
+        // (the stiffness damping's step takes K v from them)
+        internalForce_ = a_;
+        internalTorque_ = alpha_;
+    }
 
     const scalar m = mass();
     const scalar I = rotationalInertia();
@@ -299,6 +305,9 @@ Foam::structureModel::structureModel
     ds_(spacing),
     dt_(0),
     damping_(dict.getOrDefault<scalar>("damping", 0)),
+    stiffnessDamping_(dict.getOrDefault<scalar>("stiffnessDamping", 0)),
+    internalForce_(),
+    internalTorque_(),
     g_(dict.getOrDefault<vector2D>("g", vector2D::zero)),
     X_(X),
     x_(X),
@@ -339,6 +348,13 @@ Foam::structureModel::structureModel
     {
         FatalIOErrorInFunction(dict)
             << "damping = " << damping_ << " must not be negative"
+            << exit(FatalIOError);
+    }
+    if (stiffnessDamping_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "stiffnessDamping = " << stiffnessDamping_
+            << " must not be negative (a retardation time [s]; 0: none)"
             << exit(FatalIOError);
     }
     if (spacing <= 0)
@@ -396,7 +412,8 @@ Foam::scalar Foam::structureModel::maxStableDeltaT() const
     if (dtMax_ <= 0)
     {
         const scalar w = maxEigenfrequency();
-        dtMax_ = w > 0 ? 2/w : GREAT;
+        const scalar zeta = stiffnessDamping_*w/2;
+        dtMax_ = w > 0 ? 2/w*(::sqrt(1 + sqr(zeta)) - zeta) : GREAT;
     }
     return dtMax_;
 }
@@ -411,8 +428,14 @@ void Foam::structureModel::setDeltaT(const scalar dt)
             << "Structural time step " << dt << " s is not in (0, "
             << 0.9*dtMax << "] s, the largest stable one for "
             << type() << " (0.9 x 2/omega_max; spacing " << ds_
-            << " m, P-wave speed " << waveSpeed() << " m/s)"
-            << exit(FatalIOError);
+            << " m, P-wave speed " << waveSpeed() << " m/s"
+            << (
+                   stiffnessDamping_ > 0
+                 ? "; with stiffnessDamping, times sqrt(1 + zeta^2) - zeta,"
+                   " zeta = beta omega_max/2"
+                 : ""
+               )
+            << ")" << exit(FatalIOError);
     }
     dt_ = dt;
 }
@@ -565,7 +588,57 @@ void Foam::structureModel::advance(const label nSteps)
             }
         }
         dampingLoss_ += loss;
+        if (stiffnessDamping_ > 0)
+        {
+            viscousStep(dt);
+        }
     }
+}
+
+
+void Foam::structureModel::viscousStep(const scalar dt)
+{
+    // -beta K v from the internal forces a step beta along the velocities
+    // (every particle, the clamped ones with the support's velocity, so
+    // that a rigid motion gives none): F(x + beta v) - F(x)
+    const scalar beta = stiffnessDamping_;
+    const List<vector2D> x0(x_);
+    const scalarList theta0(theta_);
+    forAll(x_, i)
+    {
+        x_[i] += beta*v_[i];
+        theta_[i] += beta*omega_[i];
+    }
+    List<vector2D> force(size());
+    scalarList torque(size());
+    clampedInternalForces(force, torque);
+    x_ = x0;
+    theta_ = theta0;
+
+    // The velocities' change over the step, the kinetic energy it takes
+    // out, and the support's share: it holds the clamped particles against
+    // the damping force on them, at their velocity
+    const scalar m = mass();
+    const scalar I = rotationalInertia();
+    scalar loss = 0, support = 0;
+
+    #pragma omp parallel for schedule(static) reduction(+:loss,support)
+    for (label i = 0; i < size(); ++i)
+    {
+        const vector2D Fd(force[i] - internalForce_[i]);
+        if (clamped_[i])
+        {
+            support -= Fd & clampedVelocity_;
+            continue;
+        }
+        const scalar Td = torque[i] - internalTorque_[i];
+        const scalar e0 = 0.5*m*magSqr(v_[i]) + 0.5*I*sqr(omega_[i]);
+        v_[i] += dt/m*Fd;
+        omega_[i] += dt/I*Td;
+        loss += e0 - 0.5*m*magSqr(v_[i]) - 0.5*I*sqr(omega_[i]);
+    }
+    dampingLoss_ += loss;
+    supportWork_ += dt*support;
 }
 
 
