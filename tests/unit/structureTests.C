@@ -396,7 +396,15 @@ TEST_CASE("rotatingParticles: a moving support's work balances the energy, clamp
     // their start = the support's work (with a face clamp the support
     // carries 8/3 of each ghost's force: a wrong share breaks the
     // balance by order one). The balance is the time integration's error.
-    for (const std::string clampAt : {"particles", "face"})
+    // With stiffnessDamping (1e-5 s) the loss it counts closes the balance
+    // too (the dashpots' forces on the clamped particles meet the support
+    // and are no part of the structure's energy: counting their work as
+    // the support's broke the balance by 5% of the loss on the wedge)
+    for
+    (
+        const std::string clampAt
+      : {"particles", "face", "particles; stiffnessDamping 1e-5", "face; stiffnessDamping 1e-5"}
+    )
     {
         INFO("clampAt " << clampAt);
         test::panel p(0.2, 0.02, 4, 4);
@@ -415,12 +423,22 @@ TEST_CASE("rotatingParticles: a moving support's work balances the energy, clamp
             const scalar e = s->kineticEnergy() + s->strainEnergy();
             const scalar work = s->externalWork() + s->supportWork();
             workMax = max(workMax, mag(work));
-            worst = max(worst, mag(e - s->initialEnergy() - work));
+            worst = max
+            (
+                worst,
+                mag(e - s->initialEnergy() - work + s->dampingLoss())
+            );
         }
         WARN("clampAt " << clampAt << ": largest |balance| " << worst
-            << " J/m, largest |work| " << workMax << " J/m");
+            << " J/m, largest |work| " << workMax << " J/m, damping loss "
+            << s->dampingLoss() << " J/m");
         CHECK(workMax > 0);
         CHECK(worst < 1e-3*workMax);
+        if (s->dampingLoss() > 0)
+        {
+            // (measured 0.5% of the loss, most of it the undamped Verlet's)
+            CHECK(worst < 0.01*s->dampingLoss());
+        }
     }
 }
 

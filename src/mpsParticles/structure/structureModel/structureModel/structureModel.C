@@ -615,22 +615,22 @@ void Foam::structureModel::viscousStep(const scalar dt)
     x_ = x0;
     theta_ = theta0;
 
-    // The velocities' change over the step, the kinetic energy it takes
-    // out, and the support's share: it holds the clamped particles against
-    // the damping force on them, at their velocity
+    // The free particles' velocities change over the step, and the
+    // kinetic energy it takes out is the structure's loss (the dashpots'
+    // forces on the clamped particles meet the support, whose motion then
+    // feeds them from outside: no part of the structure's energy)
     const scalar m = mass();
     const scalar I = rotationalInertia();
-    scalar loss = 0, support = 0;
+    scalar loss = 0;
 
-    #pragma omp parallel for schedule(static) reduction(+:loss,support)
+    #pragma omp parallel for schedule(static) reduction(+:loss)
     for (label i = 0; i < size(); ++i)
     {
-        const vector2D Fd(force[i] - internalForce_[i]);
         if (clamped_[i])
         {
-            support -= Fd & clampedVelocity_;
             continue;
         }
+        const vector2D Fd(force[i] - internalForce_[i]);
         const scalar Td = torque[i] - internalTorque_[i];
         const scalar e0 = 0.5*m*magSqr(v_[i]) + 0.5*I*sqr(omega_[i]);
         v_[i] += dt/m*Fd;
@@ -638,7 +638,6 @@ void Foam::structureModel::viscousStep(const scalar dt)
         loss += e0 - 0.5*m*magSqr(v_[i]) - 0.5*I*sqr(omega_[i]);
     }
     dampingLoss_ += loss;
-    supportWork_ += dt*support;
 }
 
 
