@@ -615,27 +615,27 @@ void Foam::structureModel::viscousStep(const scalar dt)
     x_ = x0;
     theta_ = theta0;
 
-    // The free particles' velocities change over the step, and the
-    // kinetic energy it takes out is the structure's loss (the dashpots'
-    // forces on the clamped particles meet the support, whose motion then
-    // feeds them from outside: no part of the structure's energy)
-    const scalar m = mass();
-    const scalar I = rotationalInertia();
+    // Each free particle takes the impulse J = dt F_d (and L = dt T_d);
+    // the kinetic energy that takes out, -(J.v + |J|^2/(2m)) and its
+    // rotational part, is the structure's loss (the dashpots' forces on
+    // the clamped particles meet the support, whose motion feeds them
+    // from outside: no part of the structure's energy)
+    const scalar invM = 1/mass(), invI = 1/rotationalInertia();
     scalar loss = 0;
 
     #pragma omp parallel for schedule(static) reduction(+:loss)
     for (label i = 0; i < size(); ++i)
     {
-        if (clamped_[i])
+        if (!clamped_[i])
         {
-            continue;
+            const vector2D J(dt*(force[i] - internalForce_[i]));
+            const scalar L = dt*(torque[i] - internalTorque_[i]);
+            loss -=
+                (J & v_[i]) + 0.5*invM*magSqr(J)
+              + L*omega_[i] + 0.5*invI*sqr(L);
+            v_[i] += invM*J;
+            omega_[i] += invI*L;
         }
-        const vector2D Fd(force[i] - internalForce_[i]);
-        const scalar Td = torque[i] - internalTorque_[i];
-        const scalar e0 = 0.5*m*magSqr(v_[i]) + 0.5*I*sqr(omega_[i]);
-        v_[i] += dt/m*Fd;
-        omega_[i] += dt/I*Td;
-        loss += e0 - 0.5*m*magSqr(v_[i]) - 0.5*I*sqr(omega_[i]);
     }
     dampingLoss_ += loss;
 }
