@@ -350,7 +350,7 @@ TEST_CASE("stiffnessDamping: a mode decays at zeta = beta omega/2 and the energy
     // with 4 across); beta = 4e-4 s: zeta = 0.005, 12% of the energy lost
     // over the two periods. What is left is the Verlet energy's own
     // oscillation, 0.3% of E at half the stable step, at most 2% on the
-    // rate; measured 0.02%, bound 1%.
+    // rate; measured 0.05%, bound 1%.
     // The balance kinetic + strain - start = -dampingLoss is the time
     // integration's: 1% of the loss. Without damping the same plate keeps
     // its energy (the test above); a wrong sign or a factor in the force
