@@ -22,7 +22,11 @@ Description
     of 150,000 sub-steps and of 0.03 s at 0.9 of the stable step.
 
     Usage: benchStructure [-model rotatingParticles] [-across "(2 5)"]
-                          [-steps 2000]
+                          [-steps 2000] [-stiffnessDamping 0]
+
+    -stiffnessDamping beta: the structure's Kelvin-Voigt damping [s] (a
+    second evaluation of the internal forces per sub-step; its stable
+    step is smaller, and the step follows it).
 
 \*---------------------------------------------------------------------------*/
 
@@ -47,6 +51,10 @@ int main(int argc, char *argv[])
     (
         "model", "word", "structure model, default rotatingParticles"
     );
+    argList::addOption
+    (
+        "stiffnessDamping", "s", "Kelvin-Voigt retardation time, default 0"
+    );
     argList args(argc, argv, false, false);
 
     const labelList acrossList
@@ -55,6 +63,7 @@ int main(int argc, char *argv[])
     );
     const label nSteps = args.getOrDefault<label>("steps", 2000);
     const word model = args.getOrDefault<word>("model", "rotatingParticles");
+    const scalar damping = args.getOrDefault<scalar>("stiffnessDamping", 0);
 
     const scalar L = 0.3, H = 0.002, beta = 30*constant::mathematical::pi/180;
     const scalar E = 68e9, nu = 0.3, rho = 2700, load = 50e3;
@@ -84,7 +93,8 @@ int main(int argc, char *argv[])
         IStringStream is
         (
             "structureModel { type " + model + "; } rho 2700; E 68e9; nu 0.3;"
-            " planeStrain yes;"
+            " planeStrain yes; stiffnessDamping " + Foam::name(damping)
+          + ";"
         );
         autoPtr<structureModel> solidPtr
         (
