@@ -6,7 +6,7 @@ set output "tip.png"
 set multiplot layout 1,2
 set xlabel "t after the release [s]"
 set xrange [0:0.4]
-set key top left
+set key bottom right
 set title "Free end, horizontal displacement"
 set ylabel "dx [mm]"
 plot "data/antoci2007_gateTip.dat" using 1:(1000*$2) with points pt 7 ps 1.2 lc rgb "black" title "experiment (Antoci et al. 2007)", \
