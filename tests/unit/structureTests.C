@@ -128,8 +128,8 @@ scalar cantileverDeflection
 //- The elastica of a cantilever under a dead tip load (Bisshopp &
 //  Drucker 1945, Q. Appl. Math. 3): theta'' = -alpha cos(theta) on
 //  s in [0, 1], theta(0) = 0, theta'(1) = 0, alpha = P L^2/(E I); returns
-//  the tip's deflection and shortening over L (RK4, 20,000 steps, the
-//  initial curvature by bisection: 1e-8)
+//  the tip's deflection and shortening over L (RK4, 20,000 steps; the
+//  initial curvature by 40 bisections of [0, alpha])
 std::pair<scalar, scalar> elasticaTip(const scalar alpha)
 {
     scalar deflection = 0, shortening = 0;
@@ -373,7 +373,7 @@ TEST_CASE("rotatingParticles: a cantilever bent by a dead tip load follows the e
                 p.model
                 (
                     "structureModel { type rotatingParticles; } clampAt face; damping "
-                  + std::to_string(2*omega1) + ";" + aluminium
+                  + Foam::name(2*omega1) + ";" + aluminium
                 )
             );
             s->setDeltaT(0.5*s->maxStableDeltaT());
