@@ -268,7 +268,7 @@ TEST_CASE("higher-order source: the exact rate of the discrete number density")
         scalar worst = 0, largest = 0;
         forAll(x0, i)
         {
-            const scalar rate = mpsFluid::numberDensityRate(cloud, nbrs, k(), i, 1e-3*l0);
+            const scalar rate = ppeSource::numberDensityRate(cloud, nbrs, k(), i, 1e-3*l0);
             const scalar fd = (numberDensity(i, e) - numberDensity(i, -e))/(2*e);
             worst = max(worst, mag(rate - fd));
             largest = max(largest, mag(fd));
@@ -374,7 +374,7 @@ struct ppeBlock
     {
         ppeMatrix A;
         Eigen::VectorXd b, sol;
-        fluid->pressureSystem(dt, A, b, sol);
+        fluid->ppe().system(dt, A, b, sol);
         return b;
     }
 
@@ -383,7 +383,7 @@ struct ppeBlock
     {
         ppeMatrix A;
         Eigen::VectorXd b, sol;
-        fluid->pressureSystem(dt, A, b, sol);
+        fluid->ppe().system(dt, A, b, sol);
         const Eigen::SparseMatrix<double> Ac(A);
         Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(Ac);
         return ldlt.solve(b);
@@ -417,7 +417,7 @@ TEST_CASE("free-surface conditions: where a surface particle's row puts p = 0")
         ppeBlock blk(nx, ny, "surfaceCondition " + e.first + ";");
         ppeMatrix A;
         Eigen::VectorXd b, sol;
-        const labelList& row = blk.fluid->pressureSystem(2e-5, A, b, sol);
+        const labelList& row = blk.fluid->ppe().system(2e-5, A, b, sol);
         if (e.first != "flagged")
         {
             // Zero but for the round-off of n - n0 (rho/dt^2 = 2.5e12 Pa/m^2)
@@ -506,7 +506,7 @@ TEST_CASE("continuousWalls: the fluid's surface rows are p = 0, the walls' rows 
         fluid.evaluate();
         ppeMatrix A;
         Eigen::VectorXd b, sol;
-        const labelList& row = fluid.pressureSystem(2e-5, A, b, sol);
+        const labelList& row = fluid.ppe().system(2e-5, A, b, sol);
         rows s;
         s.diag.setSize(c.size(), NAN);
         s.rhs.setSize(c.size(), NAN);
@@ -640,7 +640,7 @@ TEST_CASE("weak compressibility: the equation of state p = rho c^2 (n - n0)/n0 o
     for (const eosCase& e : cases)
     {
         ppeBlock blk(N, N, e.ppe, 0.99, e.source);
-        CHECK(blk.fluid->soundSpeed() == Approx(e.c).epsilon(1e-5));
+        CHECK(blk.fluid->ppe().soundSpeed() == Approx(e.c).epsilon(1e-5));
 
         // The particle nearest the centre (rows are particles: all fluid)
         const vector2D xc(0.5*N*0.99*blk.l0, 0.5*N*0.99*blk.l0);
@@ -671,7 +671,7 @@ TEST_CASE("weak compressibility: the equation of state p = rho c^2 (n - n0)/n0 o
 
     // Incompressible: no sound speed
     ppeBlock incompressible(4, 4, "compressibility 0;");
-    CHECK(incompressible.fluid->soundSpeed() == 0);
+    CHECK(incompressible.fluid->ppe().soundSpeed() == 0);
 }
 
 
@@ -720,7 +720,7 @@ TEST_CASE("fillVoids: an approach into a void fills it; full neighbourhoods keep
         fluid.evaluate();
         ppeMatrix A;
         Eigen::VectorXd b, sol;
-        const labelList& row = fluid.pressureSystem(dt, A, b, sol);
+        const labelList& row = fluid.ppe().system(dt, A, b, sol);
         scalar s = 0;
         forAll(c.x(), i)
         {
@@ -751,7 +751,7 @@ TEST_CASE("fillVoids: an approach into a void fills it; full neighbourhoods keep
         }
         ppeMatrix A;
         Eigen::VectorXd sol;
-        blk.fluid->pressureSystem(dt, A, b[fill], sol);
+        blk.fluid->ppe().system(dt, A, b[fill], sol);
         n = blk.cloud.n();
         n0 = blk.fluid->n0();
     }
@@ -822,7 +822,7 @@ TEST_CASE("error-compensating source: Khayyer & Gotoh (2011)'s parts, each scali
                 continue;
             }
             ++nInterior;
-            const scalar r = mpsFluid::numberDensityRate(blk.cloud, nbrs, k(), i, 1e-3*blk.l0)/n0;
+            const scalar r = ppeSource::numberDensityRate(blk.cloud, nbrs, k(), i, 1e-3*blk.l0)/n0;
             const scalar e = blk.cloud.n()[i]/n0 - 1;
             const scalar rhs =
                 -(1 + mag(e))*rho/dt*r - (relaxation + mag(dt*r))*rho/sqr(dt)*e;
@@ -876,7 +876,7 @@ TEST_CASE("error-compensating source: Khayyer & Gotoh (2011)'s parts, each scali
     (
         c, ppeFluidDict("compressibility 1e-8; compressibilityForm rate;", "errorCompensating"), domain
     );
-    CHECK(rateForm.soundSpeed() == Approx(316.228).epsilon(1e-5));
+    CHECK(rateForm.ppe().soundSpeed() == Approx(316.228).epsilon(1e-5));
 }
 
 
@@ -936,5 +936,5 @@ TEST_CASE("relaxationTime: the density term as a share of the error per unit tim
     (
         c, ppeFluidDict("relaxationTime 1e-3; compressibility 1e-8; compressibilityForm rate;"), domain
     );
-    CHECK(rate.soundSpeed() == Approx(316.228).epsilon(1e-5));
+    CHECK(rate.ppe().soundSpeed() == Approx(316.228).epsilon(1e-5));
 }

@@ -12,38 +12,10 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsFluid.H"
-#include "globalIndex.H"
-#include "Map.H"
 #include "clockValue.H"
 #include "inputChecks.H"
-#include <omp.h>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
-
-const Foam::Enum<Foam::mpsFluid::sourceType> Foam::mpsFluid::sourceTypeNames
-({
-    { sourceType::numberDensity, "numberDensity" },
-    { sourceType::mixed, "mixed" },
-    { sourceType::higherOrder, "higherOrder" },
-    { sourceType::errorCompensating, "errorCompensating" },
-});
-
-const Foam::Enum<Foam::mpsFluid::surfaceConditionType>
-Foam::mpsFluid::surfaceConditionTypeNames
-({
-    { surfaceConditionType::flagged, "flagged" },
-    { surfaceConditionType::continuous, "continuous" },
-    { surfaceConditionType::extrapolated, "extrapolated" },
-    { surfaceConditionType::continuousWalls, "continuousWalls" },
-});
-
-const Foam::Enum<Foam::mpsFluid::compressibilityFormType>
-Foam::mpsFluid::compressibilityFormTypeNames
-({
-    { compressibilityFormType::absolute, "absolute" },
-    { compressibilityFormType::rate, "rate" },
-});
-
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -65,19 +37,6 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
         {"numberDensity", "gradient", "laplacian", "viscosity"},
         "re"
     );
-    if (const dictionary* ppe = inputChecks::optionalDict(dict, "ppe"))
-    {
-        inputChecks::keywords
-        (
-            *ppe,
-            {
-                "source", "surfaceCondition", "relaxation", "relaxationTime",
-                "compressibility", "compressibilityForm", "fillVoids",
-                "clampNegative"
-            },
-            "ppe"
-        );
-    }
     return dict;
 }
 
@@ -96,6 +55,28 @@ Foam::scalar Foam::mpsFluid::readPositive
             << exit(FatalIOError);
     }
     return value;
+}
+
+
+Foam::autoPtr<Foam::mpsKernel> Foam::mpsFluid::newKernel
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar l0
+)
+{
+    // A radius beyond 10 l0 is no MPS kernel (2 to 4 l0 are usual), and its
+    // lattice sums would run over (2 re/l0)^2 sites
+    const dictionary& reDict = dict.subDict("re");
+    inputChecks::value(reDict, key);
+    const scalar re = reDict.get<scalar>(key);
+    if (!(re > 1 && re <= 10))
+    {
+        FatalIOErrorInFunction(reDict)
+            << "Entry '" << key << "' (radius in units of l0) must lie"
+            << " in (1, 10], got " << re << exit(FatalIOError);
+    }
+    return mpsKernel::New(dict, re*l0);
 }
 
 
@@ -183,398 +164,6 @@ void Foam::mpsFluid::predict(const scalar dt)
     // (the halos' u*, x* are refreshed after the collisions: those read
     // only pairs closer than l0, whose halo lies within the halo width
     // less one viscosity radius of the border, its neighbourhood whole)
-}
-
-
-Foam::label Foam::mpsFluid::setUnknowns()
-{
-    const UList<particleKind>& kind = cloud_.kind();
-    UList<scalar>& p = cloud_.p();
-    const label nPart = cloud_.size();
-
-    // Unknowns: every fluid and wall particle; with the flagged condition
-    // a surface particle's row is p_i = 0 (scaled like an interior row), so
-    // that the matrix keeps its size while particles reach or leave the
-    // surface (a multigrid hierarchy can then serve several steps)
-    // (under -parallel this rank's particles only, numbered after the
-    // rows of the ranks before it; the halos' rows are their owners')
-    unknown_.setSize(nPart);
-    label nUnknowns = 0;
-    label nSolved = 0;
-    for (label i = 0; i < nPart; ++i)
-    {
-        const bool inPPE =
-            (kind[i] == particleKind::fluid || kind[i] == particleKind::wall);
-        const bool zero = zeroRow(i);
-        unknown_[i] = (inPPE && owned(i)) ? nUnknowns++ : -1;
-        if (!inPPE || zero)
-        {
-            p[i] = 0;
-        }
-        nSolved += (inPPE && !zero && owned(i));
-    }
-    info_.nUnknowns = nSolved;
-
-    rowStart_ = 0;
-    nGlobalRows_ = nUnknowns;
-    if (decomposition_)
-    {
-        const globalIndex rows(nUnknowns);
-        rowStart_ = rows.offset(Pstream::myProcNo());
-        nGlobalRows_ = rows.size();
-        for (label& row : unknown_)
-        {
-            if (row >= 0)
-            {
-                row += rowStart_;
-            }
-        }
-        syncHalos(unknown_);
-    }
-
-    return nUnknowns;
-}
-
-
-void Foam::mpsFluid::assemblePressure
-(
-    const scalar dt,
-    ppeMatrix& A,
-    Eigen::VectorXd& b,
-    Eigen::VectorXd& sol
-) const
-{
-    const UList<vector2D>& x = cloud_.x();
-    const UList<vector2D>& U = cloud_.U();
-    const UList<scalar>& n = cloud_.n();
-    // continuous and extrapolated (continuousWalls: the walls): no row is
-    // set to zero, the missing lattice sites are air (airSites(i))
-    // The pressure the missing lattice sites carry, relative to p_i: 0
-    // (continuous) or the mirror image -p_i (extrapolated), so that the
-    // missing weight counts once or twice on the diagonal
-    const scalar airFactor =
-        surfaceCondition_ == surfaceConditionType::extrapolated ? 2 : 1;
-    const UList<particleKind>& kind = cloud_.kind();
-    const UList<scalar>& p = cloud_.p();
-    const labelList& offsets = nbrs_.offsets();
-    const labelList& nbr = nbrs_.neighbours();
-    const label nPart = cloud_.size();
-    const label nUnknowns = A.rows();
-
-    // Rows: -<lap p>_i + (alpha rho/dt^2) p_i = -RHS_i (positive definite)
-    const scalar lapCoeff = 2*2/(lambdaL_*n0L_);
-    const scalar divCoeff = 2/n0N_;
-    const scalar kappa = compressibility_*rho_/sqr(dt);
-
-    // Weak compressibility: the particles' density follows the pressure,
-    // n = n0 (1 + alpha p). absolute (Ikeda et al.): the source's density
-    // is measured from n0 with the new pressure, kappa p on the diagonal.
-    // rate: the divergence term is the rate of the density, kappa (p - p_old)
-    // (a fluid of sound speed 1/sqrt(alpha rho)), the relaxation's density
-    // error is measured from n0 (1 + alpha p): gamma kappa p; the numberDensity
-    // source has no rate term, so it stays absolute
-    const bool rate = rateForm();
-    const scalar oldComp = rate ? kappa : 0;
-
-    // The matrix is written straight into compressed rows, in parallel:
-    // row sizes first, then each row filled (sorted by column) on its own
-    auto coupled = [&](const label j)
-    {
-        return
-            kind[j] != particleKind::dummy
-         && unknown_[j] >= 0 && !zeroRow(j);
-    };
-    // (rows: this rank's, from rowStart_; columns: global row numbers)
-    ppeMatrix::StorageIndex* outer = A.outerIndexPtr();
-    outer[0] = 0;
-    for (label i = 0; i < nPart; ++i)
-    {
-        if (unknown_[i] < 0 || !owned(i))
-        {
-            continue;
-        }
-        const label row = unknown_[i] - rowStart_;
-        label nnz = 1;
-        if (!zeroRow(i))
-        {
-            for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-            {
-                nnz += coupled(nbr[k]);
-            }
-        }
-        outer[row + 1] = outer[row] + nnz;
-    }
-    A.resizeNonZeros(outer[nUnknowns]);
-    ppeMatrix::StorageIndex* cols = A.innerIndexPtr();
-    double* vals = A.valuePtr();
-
-    // A typical diagonal, for the rows of surface particles
-    const scalar surfaceDiag = lapCoeff*n0L_;
-
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < nPart; ++i)
-    {
-        if (unknown_[i] < 0 || !owned(i))
-        {
-            continue;
-        }
-        const label row = unknown_[i] - rowStart_;
-        const label start = outer[row];
-        if (zeroRow(i))
-        {
-            cols[start] = unknown_[i];
-            vals[start] = surfaceDiag;
-            b[row] = 0;
-            sol[row] = 0;
-            continue;
-        }
-
-        const bool air = airSites(i);
-        scalar diag = 0;
-        scalar div = 0;
-        scalar nL = 0;
-        label e = start;
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-        {
-            const label j = nbr[k];
-            nL += wL_[k];
-            if (kind[j] == particleKind::dummy)
-            {
-                continue;
-            }
-            const scalar a = lapCoeff*wL_[k];
-            diag += a;
-            if (coupled(j))
-            {
-                cols[e] = unknown_[j];
-                vals[e] = -a;
-                ++e;
-            }
-            if (source_ == sourceType::mixed)
-            {
-                // (a velocity divergence: the mixed source's)
-                const vector2D r(x[j] - x[i]);
-                div += ((U[j] - U[i]) & r)*wN_[k]/max(magSqr(r), minR2_);
-            }
-        }
-        if (air)
-        {
-            // The lattice sites missing around i are air at p = 0: the
-            // Laplacian's weight they would carry, n0 - sum_j w_ij (dummies
-            // count as present: they close the wall side), joins the
-            // diagonal, and varies continuously as neighbours come and go
-            diag += airFactor*lapCoeff*max(n0L_ - nL, scalar(0));
-        }
-
-        // The source, and the coefficient gamma of its density error
-        const rowSource s(source(i, divCoeff*div, dt, air));
-        diag += rate ? (1 + s.gamma)*kappa : kappa;
-        b[row] = -s.rhs + oldComp*p[i];
-        sol[row] = p[i];
-
-        cols[e] = unknown_[i];
-        vals[e] = diag;
-        ++e;
-
-        // Columns in increasing order within the row (insertion sort: a
-        // row has a dozen entries)
-        for (label m = start + 1; m < e; ++m)
-        {
-            const ppeMatrix::StorageIndex c = cols[m];
-            const double v = vals[m];
-            label l = m - 1;
-            while (l >= start && cols[l] > c)
-            {
-                cols[l + 1] = cols[l];
-                vals[l + 1] = vals[l];
-                --l;
-            }
-            cols[l + 1] = c;
-            vals[l + 1] = v;
-        }
-
-    }
-
-}
-
-
-Foam::mpsFluid::rowSource Foam::mpsFluid::source
-(
-    const label i,
-    const scalar divergence,
-    const scalar dt,
-    const bool airSites
-) const
-{
-    const scalar n = cloud_.n()[i];
-
-    // The density error (n - n0)/n0; with the continuous and extrapolated
-    // conditions compression only (n* > n0), since a deficit of neighbours
-    // there is the surface's, not a rarefaction
-    scalar error = (n - n0N_)/n0N_;
-    if (airSites)
-    {
-        error = max(error, scalar(0));
-    }
-    const scalar densitySource = -rho_/sqr(dt)*error;
-
-    // With fillVoids, neighbours that approach a particle short of
-    // neighbours (n < n0) fill its void before they compress the water:
-    // the compression rate the source corrects is what exceeds the rate
-    // that fills the deficit (n0 - n)/n0 within the step (the rows whose
-    // missing sites are air: under continuousWalls the walls')
-    const scalar deficit =
-        (fillVoids_ && airSites) ? max(n0N_ - n, scalar(0))/n0N_ : 0;
-
-    // The fixed relaxation, or dt/relaxationTime (a share of the error per
-    // unit time, at most all of it in one step)
-    const scalar relaxation =
-        relaxationTime_ > 0 ? min(dt/relaxationTime_, scalar(1)) : relaxation_;
-
-    rowSource s;
-    switch (source_)
-    {
-        case sourceType::numberDensity:
-        {
-            s.rhs = densitySource;
-            s.gamma = 1;
-            break;
-        }
-        case sourceType::mixed:
-        {
-            scalar div = divergence;
-            if (div < 0)
-            {
-                div = min(div + deficit/dt, scalar(0));
-            }
-            s.rhs = rho_/dt*div + relaxation*densitySource;
-            s.gamma = relaxation;
-            break;
-        }
-        case sourceType::higherOrder:
-        case sourceType::errorCompensating:
-        {
-            // (1/n0) Dn_i/Dt: positive for a compression
-            scalar nRate =
-                numberDensityRate(cloud_, nbrs_, kN_(), i, minR_)/n0N_;
-            if (nRate > 0)
-            {
-                nRate = max(nRate - deficit/dt, scalar(0));
-            }
-            if (source_ == sourceType::higherOrder)
-            {
-                s.rhs = -rho_/dt*nRate + relaxation*densitySource;
-                s.gamma = relaxation;
-            }
-            else
-            {
-                // Khayyer & Gotoh (2011): the rate term scaled up by the
-                // density error's size, and the density error corrected
-                // with the coefficient |dt (1/n0) Dn/Dt|, so that both
-                // parts scale as 1/dt, as the rate term does; the fixed
-                // relaxation beside it (0 for the paper's form)
-                const scalar gamma = relaxation + mag(dt*nRate);
-                s.rhs =
-                    -(1 + mag(error))*rho_/dt*nRate + gamma*densitySource;
-                s.gamma = gamma;
-            }
-            break;
-        }
-    }
-    return s;
-}
-
-
-Foam::scalar Foam::mpsFluid::numberDensityRate
-(
-    const mpsCloud& cloud,
-    const neighbourList& nbrs,
-    const mpsKernel& kernel,
-    const label i,
-    const scalar minR
-)
-{
-    const UList<vector2D>& x = cloud.x();
-    const UList<vector2D>& U = cloud.U();
-    const labelList& offsets = nbrs.offsets();
-    const labelList& nbr = nbrs.neighbours();
-
-    // Dn_i/Dt = sum_j dw/dr(r_ij) (r_ij . u_ij)/r_ij over every neighbour
-    // (dummies included, as in n_i)
-    scalar rate = 0;
-    for (label kk = offsets[i]; kk < offsets[i + 1]; ++kk)
-    {
-        const label j = nbr[kk];
-        const vector2D r(x[j] - x[i]);
-        const scalar d = max(mag(r), minR);
-        rate += kernel.dwdr(d)*((U[j] - U[i]) & r)/d;
-    }
-    return rate;
-}
-
-
-const Foam::labelList& Foam::mpsFluid::pressureSystem
-(
-    const scalar dt,
-    ppeMatrix& A,
-    Eigen::VectorXd& b,
-    Eigen::VectorXd& sol
-)
-{
-    const label nUnknowns = setUnknowns();
-    A.resize(nUnknowns, nGlobalRows_);
-    b.resize(nUnknowns);
-    sol.resize(nUnknowns);
-    assemblePressure(dt, A, b, sol);
-    return unknown_;
-}
-
-
-void Foam::mpsFluid::solvePressure(const scalar dt)
-{
-    Eigen::VectorXd b;
-    Eigen::VectorXd sol;
-    ppeMatrix A;
-    pressureSystem(dt, A, b, sol);
-
-    // The relative residual |b - A p|/|b| of the last step's pressure (the
-    // log's initial residual; the solvers' final one is the same measure)
-    if (decomposition_)
-    {
-        info_.ppeInitialResidual = parallelResidual(A, b, sol);
-    }
-    else
-    {
-        const scalar bNorm = b.norm();
-        info_.ppeInitialResidual =
-            bNorm > 0 ? (b - A*sol).norm()/bNorm : scalar(0);
-    }
-
-    clockValue solveClock(true);
-    const pressureSolver::performance perf =
-        decomposition_
-      ? solver_->solve(A, b, sol, rowStart_)
-      : solver_->solve(A, b, sol);
-    lastSolveTime_ = solveClock.elapsed();
-    info_.ppeIterations = perf.iterations;
-    info_.totalPpeIterations += perf.iterations;
-    info_.ppeResidual = perf.residual;
-    info_.ppeConverged = perf.converged;
-
-
-    // The solution to the particles (negative pressures clamped to zero
-    // where ppe.clampNegative says so); flagged surface particles keep p = 0
-    UList<scalar>& p = cloud_.p();
-    const label nPart = cloud_.size();
-    for (label i = 0; i < nPart; ++i)
-    {
-        const label row = unknown_[i] - rowStart_;
-        if (unknown_[i] >= 0 && owned(i) && !zeroRow(i))
-        {
-            p[i] = (clampNegative_ && sol[row] < 0) ? 0 : sol[row];
-        }
-    }
-    syncHalos(p);
 }
 
 
@@ -674,20 +263,27 @@ Foam::mpsFluid::mpsFluid
     l0_(readPositive(dict, "l0")),
     minR_(1e-3*l0_),
     minR2_(sqr(minR_)),
-    source_(sourceType::mixed),
-    surfaceCondition_(surfaceConditionType::flagged),
-    relaxation_(0.05),
-    relaxationTime_(0),
-    compressibility_(0),
-    compressibilityForm_(compressibilityFormType::absolute),
-    fillVoids_(false),
-    clampNegative_(true),
+    kN_(newKernel(dict, "numberDensity", l0_)),
+    kG_(newKernel(dict, "gradient", l0_)),
+    kL_(newKernel(dict, "laplacian", l0_)),
+    kV_(newKernel(dict, "viscosity", l0_)),
+    n0N_(kN_->latticeNumberDensity(l0_)),
+    n0G_(kG_->latticeNumberDensity(l0_)),
+    n0L_(kL_->latticeNumberDensity(l0_)),
+    lambdaL_(kL_->latticeLambda(l0_)),
+    n0V_(kV_->latticeNumberDensity(l0_)),
+    lambdaV_(kV_->latticeLambda(l0_)),
+    F0_(kN_->latticeSurfaceAsymmetry(l0_)),
+    number_{cloud_, nbrs_, wN_, kN_(), n0N_, kN_->latticeLambda(l0_), minR_},
+    laplacian_{cloud_, nbrs_, wL_, kL_(), n0L_, lambdaL_, minR_},
+    ppe_(cloud_, dict, number_, laplacian_, rho_),
+    freeSurface_(freeSurfaceModel::New(dict, l0_)),
+    collision_(collisionModel::New(dict)),
+    shifting_(particleShifting::New(dict)),
+    gradient_(pressureGradient::New(dict)),
     domain_(domain),
-    lastSolveTime_(0),
     decomposition_(nullptr),
-    exchangeTime_(0),
-    rowStart_(0),
-    nGlobalRows_(0)
+    exchangeTime_(0)
 {
     if (nu_ < 0)
     {
@@ -697,147 +293,6 @@ Foam::mpsFluid::mpsFluid
     }
     const vector g(dict.get<vector>("g"));
     g_ = vector2D(g.x(), g.y());
-
-    const dictionary& reDict = dict.subDict("re");
-    auto radius = [&](const word& key)
-    {
-        // A radius beyond 10 l0 is no MPS kernel (2 to 4 l0 are usual),
-        // and its lattice sums would run over (2 re/l0)^2 sites
-        inputChecks::value(reDict, key);
-        const scalar re = reDict.get<scalar>(key);
-        if (!(re > 1 && re <= 10))
-        {
-            FatalIOErrorInFunction(reDict)
-                << "Entry '" << key << "' (radius in units of l0) must lie"
-                << " in (1, 10], got " << re << exit(FatalIOError);
-        }
-        return re*l0_;
-    };
-    kN_ = mpsKernel::New(dict, radius("numberDensity"));
-    kG_ = mpsKernel::New(dict, radius("gradient"));
-    kL_ = mpsKernel::New(dict, radius("laplacian"));
-    kV_ = mpsKernel::New(dict, radius("viscosity"));
-
-    n0N_ = kN_->latticeNumberDensity(l0_);
-    n0G_ = kG_->latticeNumberDensity(l0_);
-    n0L_ = kL_->latticeNumberDensity(l0_);
-    lambdaL_ = kL_->latticeLambda(l0_);
-    n0V_ = kV_->latticeNumberDensity(l0_);
-    lambdaV_ = kV_->latticeLambda(l0_);
-    F0_ = kN_->latticeSurfaceAsymmetry(l0_);
-
-    if (const dictionary* ppePtr = dict.findDict("ppe"))
-    {
-        const dictionary& ppe = *ppePtr;
-        source_ = sourceTypeNames.getOrDefault("source", ppe, source_);
-        surfaceCondition_ = surfaceConditionTypeNames.getOrDefault
-        (
-            "surfaceCondition", ppe, surfaceCondition_
-        );
-        relaxation_ = ppe.getOrDefault<scalar>("relaxation", relaxation_);
-        if (ppe.found("relaxationTime"))
-        {
-            relaxationTime_ = ppe.get<scalar>("relaxationTime");
-            if (ppe.found("relaxation"))
-            {
-                FatalIOErrorInFunction(ppe)
-                    << "Entries 'relaxation' and 'relaxationTime': the one"
-                    << " stands in place of the other, give one of them"
-                    << exit(FatalIOError);
-            }
-            if (!(relaxationTime_ > 0))
-            {
-                FatalIOErrorInFunction(ppe)
-                    << "Entry 'relaxationTime' [s] must be positive, got "
-                    << relaxationTime_ << exit(FatalIOError);
-            }
-        }
-        compressibility_ =
-            ppe.getOrDefault<scalar>("compressibility", compressibility_);
-        compressibilityForm_ = compressibilityFormTypeNames.getOrDefault
-        (
-            "compressibilityForm", ppe, compressibilityForm_
-        );
-        clampNegative_ = ppe.getOrDefault<bool>("clampNegative", true);
-        fillVoids_ = ppe.getOrDefault<bool>("fillVoids", false);
-        if (fillVoids_ && surfaceCondition_ == surfaceConditionType::flagged)
-        {
-            FatalIOErrorInFunction(ppe)
-                << "Entry 'fillVoids' needs surfaceCondition continuous,"
-                << " extrapolated or continuousWalls (flagged sets the"
-                << " particles short of neighbours to p = 0)"
-                << exit(FatalIOError);
-        }
-        if (relaxationTime_ > 0 && source_ == sourceType::numberDensity)
-        {
-            FatalIOErrorInFunction(ppe)
-                << "Entry 'relaxationTime' applies to the sources mixed,"
-                << " higherOrder and errorCompensating, not to "
-                << sourceTypeNames[source_] << exit(FatalIOError);
-        }
-        const bool dynamicRelaxation =
-            source_ == sourceType::errorCompensating || relaxationTime_ > 0;
-        if
-        (
-            dynamicRelaxation
-         && compressibility_ > 0
-         && !rateForm()
-        )
-        {
-            FatalIOErrorInFunction(ppe)
-                << "Entry 'source " << sourceTypeNames[source_] << "'"
-                << (relaxationTime_ > 0 ? " with 'relaxationTime'" : "")
-                << " and 'compressibility' " << compressibility_
-                << " need 'compressibilityForm rate' (absolute: the"
-                << " equation of state would take the density term's"
-                << " coefficient, which changes with the step or from"
-                << " particle to particle), or compressibility 0"
-                << exit(FatalIOError);
-        }
-        if (relaxation_ < 0 || relaxation_ > 1 || compressibility_ < 0)
-        {
-            FatalIOErrorInFunction(ppe)
-                << "Entries 'relaxation' (0 to 1, got " << relaxation_
-                << ") and 'compressibility' (not negative, got "
-                << compressibility_ << ") are out of range"
-                << exit(FatalIOError);
-        }
-    }
-
-    Info<< "Pressure equation: source " << sourceTypeNames[source_]
-        << ", surfaceCondition " << surfaceConditionTypeNames[surfaceCondition_];
-    if (source_ != sourceType::numberDensity)
-    {
-        if (relaxationTime_ > 0)
-        {
-            Info<< ", relaxationTime " << relaxationTime_ << " s";
-        }
-        else
-        {
-            Info<< ", relaxation " << relaxation_;
-        }
-    }
-    if (compressibility_ > 0)
-    {
-        Info<< ", compressibility " << compressibility_ << " 1/Pa ("
-            << compressibilityFormTypeNames
-               [
-                   rateForm()
-                 ? compressibilityFormType::rate
-                 : compressibilityFormType::absolute
-               ]
-            << "): sound speed " << soundSpeed() << " m/s" << nl;
-    }
-    else
-    {
-        Info<< ", incompressible (compressibility 0)" << nl;
-    }
-
-    freeSurface_ = freeSurfaceModel::New(dict, l0_);
-    collision_ = collisionModel::New(dict);
-    shifting_ = particleShifting::New(dict);
-    gradient_ = pressureGradient::New(dict);
-    solver_ = pressureSolver::New(dict);
 }
 
 
@@ -886,21 +341,6 @@ void Foam::mpsFluid::evaluate()
 }
 
 
-Foam::scalar Foam::mpsFluid::soundSpeed() const
-{
-    if (!(compressibility_ > 0))
-    {
-        return 0;
-    }
-    // At rest (no divergence) and uniform n the rows read kappa p = gamma
-    // (rho/dt^2)(n - n0)/n0 (absolute), or, steady (p = p_old), gamma kappa
-    // p = gamma (rho/dt^2)(n - n0)/n0 (rate), kappa = alpha rho/dt^2
-    const scalar gamma =
-        (source_ == sourceType::numberDensity || rateForm()) ? 1 : relaxation_;
-    return sqrt(gamma/(compressibility_*rho_));
-}
-
-
 Foam::scalar Foam::mpsFluid::interactionRadius() const
 {
     return max(max(kN_->re(), kG_->re()), max(kL_->re(), kV_->re()));
@@ -910,6 +350,7 @@ Foam::scalar Foam::mpsFluid::interactionRadius() const
 void Foam::mpsFluid::setDecomposition(mpsDecomposition& decomposition)
 {
     decomposition_ = &decomposition;
+    ppe_.setDecomposition(decomposition);
     redistribute();
 }
 
@@ -947,52 +388,6 @@ void Foam::mpsFluid::localise()
         // particles to their ranks
         rebuildPairs();
     }
-}
-
-
-Foam::scalar Foam::mpsFluid::parallelResidual
-(
-    const ppeMatrix& A,
-    const Eigen::VectorXd& b,
-    const Eigen::VectorXd& sol
-) const
-{
-    // |b - A p|/|b| over the ranks: the columns of other ranks' rows take
-    // the pressures of the halos (zeroed where the owner zeroed them)
-    Map<scalar> haloP;
-    const UList<scalar>& p = cloud_.p();
-    forAll(unknown_, i)
-    {
-        if (unknown_[i] >= 0 && !owned(i))
-        {
-            haloP.set(unknown_[i], p[i]);
-        }
-    }
-    scalar r2 = 0, b2 = 0;
-    for (label row = 0; row < A.rows(); ++row)
-    {
-        scalar Ap = 0;
-        for
-        (
-            label k = A.outerIndexPtr()[row];
-            k < A.outerIndexPtr()[row + 1];
-            ++k
-        )
-        {
-            const label col = A.innerIndexPtr()[k];
-            const label local = col - rowStart_;
-            Ap += A.valuePtr()[k]
-               *(
-                    (local >= 0 && local < sol.size())
-                  ? sol[local] : haloP.lookup(col, 0)
-                );
-        }
-        r2 += sqr(b[row] - Ap);
-        b2 += sqr(b[row]);
-    }
-    reduce(r2, sumOp<scalar>());
-    reduce(b2, sumOp<scalar>());
-    return b2 > 0 ? ::sqrt(r2/b2) : scalar(0);
 }
 
 
@@ -1076,11 +471,16 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
 
 void Foam::mpsFluid::solveStepPressure(const scalar dt)
 {
-    // Assembly and solve: the solve's own time is measured inside
-    clockValue clock(true);
-    solvePressure(dt);
-    info_.timeAssembly += clock.elapsed() - lastSolveTime_;
-    info_.timeSolve += lastSolveTime_;
+    ppe_.solve(dt);
+    const pressureSolver::performance& perf = ppe_.performance();
+    info_.nUnknowns = ppe_.nSolved();
+    info_.ppeInitialResidual = ppe_.initialResidual();
+    info_.ppeIterations = perf.iterations;
+    info_.totalPpeIterations += perf.iterations;
+    info_.ppeResidual = perf.residual;
+    info_.ppeConverged = perf.converged;
+    info_.timeAssembly += ppe_.assemblyTime();
+    info_.timeSolve += ppe_.solveTime();
 }
 
 

@@ -1,0 +1,440 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "pressureEquation.H"
+#include "globalIndex.H"
+#include "Map.H"
+#include "clockValue.H"
+#include "inputChecks.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::pressureEquation::compressibilityFormType>
+Foam::pressureEquation::compressibilityFormTypeNames
+({
+    { compressibilityFormType::absolute, "absolute" },
+    { compressibilityFormType::rate, "rate" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::pressureEquation::read(const dictionary& ppe)
+{
+    wordList valid
+    {
+        "source", "surfaceCondition", "compressibility",
+        "compressibilityForm", "clampNegative"
+    };
+    valid.append(source_->entries());
+    valid.append(surface_->entries());
+    inputChecks::keywords(ppe, valid, "ppe");
+
+    compressibility_ = ppe.getOrDefault<scalar>("compressibility", 0);
+    if (compressibility_ < 0)
+    {
+        FatalIOErrorInFunction(ppe)
+            << "Entry 'compressibility' [1/Pa] must not be negative, got "
+            << compressibility_ << exit(FatalIOError);
+    }
+    const compressibilityFormType form =
+        compressibilityFormTypeNames.getOrDefault
+        (
+            "compressibilityForm", ppe, compressibilityFormType::absolute
+        );
+    rateForm_ = form == compressibilityFormType::rate && source_->hasRate();
+    clampNegative_ = ppe.getOrDefault<bool>("clampNegative", true);
+
+    if (source_->variableGamma() && compressibility_ > 0 && !rateForm_)
+    {
+        FatalIOErrorInFunction(ppe)
+            << "Entry 'source " << source_->type() << "'"
+            << (ppe.found("relaxationTime") ? " with 'relaxationTime'" : "")
+            << " and 'compressibility' " << compressibility_
+            << " need 'compressibilityForm rate' (absolute: the"
+            << " equation of state would take the density term's"
+            << " coefficient, which changes with the step or from"
+            << " particle to particle), or compressibility 0"
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::label Foam::pressureEquation::setUnknowns()
+{
+    const UList<particleKind>& kind = cloud_.kind();
+    UList<scalar>& p = cloud_.p();
+    const label nPart = cloud_.size();
+
+    // Rows: every fluid and wall particle; a zero row p_i = 0 (scaled like
+    // an interior row) keeps its place, so that the matrix keeps its size
+    // while particles reach or leave the surface (a multigrid hierarchy
+    // can then serve several steps). Under -parallel this rank's
+    // particles only, numbered after the rows of the ranks before it; the
+    // halos' rows are their owners'
+    zeroRow_.setSize(nPart);
+    airSites_.setSize(nPart);
+    unknown_.setSize(nPart);
+    label nUnknowns = 0;
+    nSolved_ = 0;
+    for (label i = 0; i < nPart; ++i)
+    {
+        const bool inPPE =
+            (kind[i] == particleKind::fluid || kind[i] == particleKind::wall);
+        zeroRow_[i] = surface_->zeroRow(cloud_, i);
+        airSites_[i] = surface_->airSites(cloud_, i);
+        unknown_[i] = (inPPE && owned(i)) ? nUnknowns++ : -1;
+        if (!inPPE || zeroRow_[i])
+        {
+            p[i] = 0;
+        }
+        nSolved_ += (inPPE && !zeroRow_[i] && owned(i));
+    }
+
+    rowStart_ = 0;
+    nGlobalRows_ = nUnknowns;
+    if (decomposition_)
+    {
+        const globalIndex rows(nUnknowns);
+        rowStart_ = rows.offset(Pstream::myProcNo());
+        nGlobalRows_ = rows.size();
+        for (label& row : unknown_)
+        {
+            if (row >= 0)
+            {
+                row += rowStart_;
+            }
+        }
+        decomposition_->updateHalos(cloud_, unknown_);
+    }
+
+    return nUnknowns;
+}
+
+
+void Foam::pressureEquation::assemble
+(
+    const scalar dt,
+    ppeMatrix& A,
+    Eigen::VectorXd& b,
+    Eigen::VectorXd& sol
+) const
+{
+    const UList<particleKind>& kind = cloud_.kind();
+    const UList<scalar>& p = cloud_.p();
+    const labelList& offsets = laplacian_.pairs.offsets();
+    const labelList& nbr = laplacian_.pairs.neighbours();
+    const UList<scalar>& wL = laplacian_.w;
+    const scalar n0L = laplacian_.n0;
+    const label nPart = cloud_.size();
+    const label nUnknowns = A.rows();
+
+    // Rows: -<lap p>_i + (alpha rho/dt^2) p_i = -RHS_i (positive definite)
+    const scalar lapCoeff = 2*2/(laplacian_.lambda*n0L);
+    const scalar kappa = compressibility_*rho_/sqr(dt);
+    const scalar airWeight = surface_->airWeight();
+
+    // Weak compressibility: absolute, kappa p on the diagonal; rate, the
+    // divergence term is the rate of the density, kappa (p - p_old), and
+    // the density error is measured from n0 (1 + alpha p): gamma kappa p
+    const scalar oldComp = rateForm_ ? kappa : 0;
+
+    // The matrix is written straight into compressed rows, in parallel:
+    // row sizes first, then each row filled (sorted by column) on its own
+    // (rows: this rank's, from rowStart_; columns: global row numbers)
+    auto coupled = [&](const label j)
+    {
+        return
+            kind[j] != particleKind::dummy && unknown_[j] >= 0 && !zeroRow_[j];
+    };
+    ppeMatrix::StorageIndex* outer = A.outerIndexPtr();
+    outer[0] = 0;
+    for (label i = 0; i < nPart; ++i)
+    {
+        if (unknown_[i] < 0 || !owned(i))
+        {
+            continue;
+        }
+        const label row = unknown_[i] - rowStart_;
+        label nnz = 1;
+        if (!zeroRow_[i])
+        {
+            for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+            {
+                nnz += coupled(nbr[k]);
+            }
+        }
+        outer[row + 1] = outer[row] + nnz;
+    }
+    A.resizeNonZeros(outer[nUnknowns]);
+    ppeMatrix::StorageIndex* cols = A.innerIndexPtr();
+    double* vals = A.valuePtr();
+
+    // A typical diagonal, for the zero rows
+    const scalar surfaceDiag = lapCoeff*n0L;
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < nPart; ++i)
+    {
+        if (unknown_[i] < 0 || !owned(i))
+        {
+            continue;
+        }
+        const label row = unknown_[i] - rowStart_;
+        const label start = outer[row];
+        if (zeroRow_[i])
+        {
+            cols[start] = unknown_[i];
+            vals[start] = surfaceDiag;
+            b[row] = 0;
+            sol[row] = 0;
+            continue;
+        }
+
+        scalar diag = 0;
+        scalar nL = 0;
+        label e = start;
+        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        {
+            const label j = nbr[k];
+            nL += wL[k];
+            if (kind[j] == particleKind::dummy)
+            {
+                continue;
+            }
+            const scalar a = lapCoeff*wL[k];
+            diag += a;
+            if (coupled(j))
+            {
+                cols[e] = unknown_[j];
+                vals[e] = -a;
+                ++e;
+            }
+        }
+        if (airSites_[i])
+        {
+            // The missing sites' weight n0 - sum_j w_ij (dummies count as
+            // present) joins the diagonal
+            diag += airWeight*lapCoeff*max(n0L - nL, scalar(0));
+        }
+
+        const ppeSource::row s(source_->source(i, dt, airSites_[i]));
+        diag += rateForm_ ? (1 + s.gamma)*kappa : kappa;
+        b[row] = -s.rhs + oldComp*p[i];
+        sol[row] = p[i];
+
+        cols[e] = unknown_[i];
+        vals[e] = diag;
+        ++e;
+
+        // Columns in increasing order within the row (insertion sort: a
+        // row has a few dozen entries)
+        for (label m = start + 1; m < e; ++m)
+        {
+            const ppeMatrix::StorageIndex c = cols[m];
+            const double v = vals[m];
+            label l = m - 1;
+            while (l >= start && cols[l] > c)
+            {
+                cols[l + 1] = cols[l];
+                vals[l + 1] = vals[l];
+                --l;
+            }
+            cols[l + 1] = c;
+            vals[l + 1] = v;
+        }
+    }
+}
+
+
+Foam::scalar Foam::pressureEquation::residual
+(
+    const ppeMatrix& A,
+    const Eigen::VectorXd& b,
+    const Eigen::VectorXd& sol
+) const
+{
+    if (!decomposition_)
+    {
+        const scalar bNorm = b.norm();
+        return bNorm > 0 ? (b - A*sol).norm()/bNorm : scalar(0);
+    }
+
+    // Over the ranks: the columns of other ranks' rows take the pressures
+    // of the halos (zeroed where the owner zeroed them)
+    Map<scalar> haloP;
+    const UList<scalar>& p = cloud_.p();
+    forAll(unknown_, i)
+    {
+        if (unknown_[i] >= 0 && !owned(i))
+        {
+            haloP.set(unknown_[i], p[i]);
+        }
+    }
+    scalar r2 = 0, b2 = 0;
+    for (label row = 0; row < A.rows(); ++row)
+    {
+        scalar Ap = 0;
+        for
+        (
+            label k = A.outerIndexPtr()[row];
+            k < A.outerIndexPtr()[row + 1];
+            ++k
+        )
+        {
+            const label col = A.innerIndexPtr()[k];
+            const label local = col - rowStart_;
+            Ap += A.valuePtr()[k]
+               *(
+                    (local >= 0 && local < sol.size())
+                  ? sol[local] : haloP.lookup(col, 0)
+                );
+        }
+        r2 += sqr(b[row] - Ap);
+        b2 += sqr(b[row]);
+    }
+    reduce(r2, sumOp<scalar>());
+    reduce(b2, sumOp<scalar>());
+    return b2 > 0 ? ::sqrt(r2/b2) : scalar(0);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pressureEquation::pressureEquation
+(
+    mpsCloud& cloud,
+    const dictionary& mpsProperties,
+    const kernelPairs& number,
+    const kernelPairs& laplacian,
+    const scalar rho
+)
+:
+    cloud_(cloud),
+    number_(number),
+    laplacian_(laplacian),
+    rho_(rho),
+    compressibility_(0),
+    rateForm_(false),
+    clampNegative_(true),
+    rowStart_(0),
+    nGlobalRows_(0),
+    decomposition_(nullptr),
+    nSolved_(0),
+    initialResidual_(0),
+    assemblyTime_(0),
+    solveTime_(0)
+{
+    const dictionary* ppePtr = inputChecks::optionalDict(mpsProperties, "ppe");
+    const dictionary ppe(ppePtr ? *ppePtr : dictionary());
+
+    source_ = ppeSource::New(ppe, number_, rho_);
+    surface_ = ppeSurfaceCondition::New(ppe);
+    read(ppe);
+
+    Info<< "Pressure equation: source " << source_->type()
+        << ", surfaceCondition " << surface_->type();
+    source_->info(Info);
+    if (compressibility_ > 0)
+    {
+        Info<< ", compressibility " << compressibility_ << " 1/Pa ("
+            << compressibilityFormTypeNames
+               [
+                   rateForm_
+                 ? compressibilityFormType::rate
+                 : compressibilityFormType::absolute
+               ]
+            << "): sound speed " << soundSpeed() << " m/s" << nl;
+    }
+    else
+    {
+        Info<< ", incompressible (compressibility 0)" << nl;
+    }
+
+    solver_ = pressureSolver::New(mpsProperties);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::pressureEquation::soundSpeed() const
+{
+    if (!(compressibility_ > 0))
+    {
+        return 0;
+    }
+    // At rest (no divergence) and uniform n the rows read kappa p = gamma
+    // (rho/dt^2)(n - n0)/n0 (absolute), or, steady (p = p_old), gamma kappa
+    // p = gamma (rho/dt^2)(n - n0)/n0 (rate), kappa = alpha rho/dt^2
+    const scalar gamma = rateForm_ ? 1 : source_->restGamma();
+    return sqrt(gamma/(compressibility_*rho_));
+}
+
+
+const Foam::labelList& Foam::pressureEquation::system
+(
+    const scalar dt,
+    ppeMatrix& A,
+    Eigen::VectorXd& b,
+    Eigen::VectorXd& sol
+)
+{
+    const label nUnknowns = setUnknowns();
+    A.resize(nUnknowns, nGlobalRows_);
+    b.resize(nUnknowns);
+    sol.resize(nUnknowns);
+    assemble(dt, A, b, sol);
+    return unknown_;
+}
+
+
+void Foam::pressureEquation::solve(const scalar dt)
+{
+    const clockValue clock(true);
+    Eigen::VectorXd b;
+    Eigen::VectorXd sol;
+    ppeMatrix A;
+    system(dt, A, b, sol);
+
+    // The relative residual of the last step's pressure (the log's initial
+    // residual; the solvers' final one is the same measure)
+    initialResidual_ = residual(A, b, sol);
+
+    const clockValue solveClock(true);
+    performance_ =
+        decomposition_
+      ? solver_->solve(A, b, sol, rowStart_)
+      : solver_->solve(A, b, sol);
+    solveTime_ = solveClock.elapsed();
+
+    // The solution to the particles (negative pressures clamped to zero
+    // where clampNegative says so); zero rows keep p = 0
+    UList<scalar>& p = cloud_.p();
+    const label nPart = cloud_.size();
+    for (label i = 0; i < nPart; ++i)
+    {
+        const label row = unknown_[i] - rowStart_;
+        if (unknown_[i] >= 0 && owned(i) && !zeroRow_[i])
+        {
+            p[i] = (clampNegative_ && sol[row] < 0) ? 0 : sol[row];
+        }
+    }
+    if (decomposition_)
+    {
+        decomposition_->updateHalos(cloud_, p);
+    }
+    assemblyTime_ = clock.elapsed() - solveTime_;
+}
+
+
+// ************************************************************************* //
