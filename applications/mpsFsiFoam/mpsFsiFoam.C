@@ -56,7 +56,7 @@ Description
 #include "mpsDecomposition.H"
 #include "mpsState.H"
 #include "mpsStructure.H"
-#include "fluidStructureInterface.H"
+#include "couplingScheme.H"
 #include "clockValue.H"
 #include "inputChecks.H"
 #include "IFstream.H"
@@ -106,12 +106,11 @@ int main(int argc, char *argv[])
         ++stepi;
         const scalar dt = runTime.deltaTValue();
 
-        // Fluid first; then the coupling step: wall pressures to the
-        // structure, its sub-steps, the attached walls moved with it
-        // (coupling.scheme implicit: the pressure and the structure's
-        // step iterated until they agree on the walls' velocities)
-        const mpsFluid::stepInfo& info =
-            coupling.step(fluid, runTime.value(), dt);
+        // The step: the fluid's, and the structure's sub-steps under the
+        // wall pressures, as the coupling scheme orders them (explicit:
+        // fluid first, then the structure, which moves the walls; implicit:
+        // the pressure and the structure iterated within the step)
+        const mpsFluid::stepInfo& info = coupling->evolve(runTime.value(), dt);
         #include "checkFluidStep.H"
 
         runTime.write();

@@ -12,7 +12,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fluidStructureInterface.H"
-#include "mpsState.H"
 #include "Time.H"
 #include "clockValue.H"
 #include "allRanks.H"
@@ -160,14 +159,12 @@ void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
 }
 
 
-void Foam::fluidStructureInterface::transferPressure()
+void Foam::fluidStructureInterface::transferPressure(const mpsFluid& fluid)
 {
+    const clockValue clock(true);
     boolList owned;
     const labelList index(attachedHere(owned));
     const scalarList& theta = structure_.model().theta();
-
-    const mpsFluid* fluid =
-        fluidPressure_ ? &mpsState::lookup(db()).fluid() : nullptr;
 
     // The interface walls this rank owns (all of them in a serial run)
     force_ = Zero;
@@ -187,7 +184,7 @@ void Foam::fluidStructureInterface::transferPressure()
         );
         const scalar p =
             fluidPressure_
-          ? max(scalar(0), fluid->fluidPressureAt(i))
+          ? max(scalar(0), fluid.fluidPressureAt(i))
           : cloud_.p()[i];
         const vector2D F(-p*cloud_.spacing()[i]*n);
         wallForce_[k] = F;
@@ -210,6 +207,7 @@ void Foam::fluidStructureInterface::transferPressure()
         sum += f;
     }
     maxImbalance_ = max(maxImbalance_, mag(sum - fluidForce_));
+    time_ += clock.elapsed();
 }
 
 
@@ -243,13 +241,7 @@ Foam::fluidStructureInterface::fluidStructureInterface
     fluidForce_(Zero),
     wallWork_(0),
     maxImbalance_(0),
-    time_(0),
-    implicit_(false),
-    maxIterations_(50),
-    tolerance_(1e-3),
-    lastIterations_(0),
-    totalIterations_(0),
-    nUnconverged_(0)
+    time_(0)
 {
     const dictionary* dictPtr = structureProperties.findDict("coupling");
     if (!dictPtr)
@@ -266,32 +258,6 @@ Foam::fluidStructureInterface::fluidStructureInterface
             << exit(FatalIOError);
     }
     fluidPressure_ = (wallPressure == "fluid");
-    const word scheme(dict.getOrDefault<word>("scheme", "explicit"));
-    if (scheme != "explicit" && scheme != "implicit")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'scheme': " << scheme << " is not valid" << nl
-            << "Valid coupling schemes: (explicit implicit)"
-            << exit(FatalIOError);
-    }
-    implicit_ = (scheme == "implicit");
-    if (implicit_ && fluidPressure_)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'scheme' implicit needs 'wallPressure' solved: the"
-            << " fluid's pressure gradients (wallPressure fluid) are"
-            << " computed in the fluid's correction, after the iterations"
-            << exit(FatalIOError);
-    }
-    maxIterations_ = dict.getOrDefault<label>("maxIterations", maxIterations_);
-    tolerance_ = dict.getOrDefault<scalar>("tolerance", tolerance_);
-    if (maxIterations_ < 1 || !(tolerance_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entries 'maxIterations' (at least 1, got " << maxIterations_
-            << ") and 'tolerance' (above 0, got " << tolerance_ << ")"
-            << exit(FatalIOError);
-    }
     if (!structure_.active())
     {
         FatalIOErrorInFunction(dict)
@@ -348,30 +314,6 @@ Foam::fluidStructureInterface::fluidStructureInterface
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fluidStructureInterface::evolve
-(
-    const scalar t,
-    const scalar deltaT
-)
-{
-    if (!active())
-    {
-        structure_.advance(t, deltaT, List<vector2D>());
-        return;
-    }
-
-    clockValue clock(true);
-    transferPressure();
-    time_ += clock.elapsed();
-
-    structure_.advance(t, deltaT, force_);
-
-    clock.update();
-    moveWalls();
-    time_ += clock.elapsed();
-}
-
-
 void Foam::fluidStructureInterface::wallMotion
 (
     List<vector2D>& x,
@@ -397,6 +339,7 @@ void Foam::fluidStructureInterface::moveWalls()
     {
         return;
     }
+    const clockValue clock(true);
     List<vector2D> x, U;
     wallMotion(x, U);
     if (wallForce_.size() == x.size())
@@ -421,126 +364,7 @@ void Foam::fluidStructureInterface::moveWalls()
             cloud_.U()[i] = U[k];
         }
     }
-}
-
-
-const Foam::mpsFluid::stepInfo& Foam::fluidStructureInterface::step
-(
-    mpsFluid& fluid,
-    const scalar t,
-    const scalar deltaT
-)
-{
-    if (!implicit_ || !active())
-    {
-        const mpsFluid::stepInfo& info = fluid.step(deltaT);
-        if (info.finite)
-        {
-            evolve(t, deltaT);
-        }
-        return info;
-    }
-
-    if (!fluid.beginStep(deltaT))
-    {
-        if (fluid.info().finite)
-        {
-            // No fluid: the structure alone
-            evolve(t, deltaT);
-        }
-        return fluid.info();
-    }
-
-    // Fixed point on the attached particles' velocities, which enter the
-    // pressure through the divergence: the pressure solved with the walls
-    // at the guessed end-of-step velocity, the structure's step under it,
-    // the walls' new velocity; Aitken's relaxation (Kuettler & Wall 2008)
-    // (every rank holds the whole guess: each particle's from its owner)
-    boolList owned;
-    const labelList index(attachedHere(owned));
-    const label n = index.size();
-    List<vector2D> guess(n, Zero), x, U, r(n), rOld(n);
-    forAll(index, k)
-    {
-        if (owned[k])
-        {
-            guess[k] = cloud_.U()[index[k]];
-        }
-    }
-    combineRanks(guess, plusEqOp<vector2D>());
-    structure_.saveState();
-    // Every iteration solves from the step's old pressure (the rate form
-    // of the compressibility reads it)
-    const scalarList pOld(cloud_.p());
-    scalar omega = 0.5;
-    lastIterations_ = 0;
-    bool converged = false;
-    while (lastIterations_ < maxIterations_)
-    {
-        ++lastIterations_;
-        forAll(index, k)
-        {
-            if (index[k] >= 0)
-            {
-                cloud_.U()[index[k]] = guess[k];
-            }
-        }
-        if (lastIterations_ > 1)
-        {
-            cloud_.p().deepCopy(pOld);
-        }
-        fluid.solveStepPressure(deltaT);
-
-        clockValue clock(true);
-        transferPressure();
-        time_ += clock.elapsed();
-        if (lastIterations_ > 1)
-        {
-            structure_.restoreState();
-        }
-        structure_.advance(t, deltaT, force_);
-        wallMotion(x, U);
-
-        scalar r2 = 0, U2 = 0;
-        forAll(r, k)
-        {
-            r[k] = U[k] - guess[k];
-            r2 += magSqr(r[k]);
-            U2 += magSqr(U[k]);
-        }
-        if (r2 <= sqr(tolerance_)*max(U2, VSMALL))
-        {
-            converged = true;
-            break;
-        }
-        if (lastIterations_ > 1)
-        {
-            scalar num = 0, den = 0;
-            forAll(r, k)
-            {
-                const vector2D dr(r[k] - rOld[k]);
-                num += rOld[k] & dr;
-                den += magSqr(dr);
-            }
-            if (den > 0)
-            {
-                omega = -omega*num/den;
-            }
-        }
-        forAll(guess, k)
-        {
-            guess[k] += omega*r[k];
-        }
-        rOld = r;
-    }
-    totalIterations_ += lastIterations_;
-    nUnconverged_ += !converged;
-
-    const mpsFluid::stepInfo& info = fluid.endStep(deltaT);
-    clockValue clock(true);
-    moveWalls();
     time_ += clock.elapsed();
-    return info;
 }
 
 

@@ -252,18 +252,6 @@ Foam::scalar Foam::mpsStructure::spacing
             "initialVelocity"
         );
     }
-    if (const dictionary* coupling = dict.findDict("coupling"))
-    {
-        inputChecks::keywords
-        (
-            *coupling,
-            {
-                "walls", "pressureRadius", "wallPressure", "scheme",
-                "maxIterations", "tolerance"
-            },
-            "coupling"
-        );
-    }
 
     if (dict.found("spacing"))
     {
@@ -394,7 +382,7 @@ Foam::mpsStructure::mpsStructure
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::mpsStructure::advance
+bool Foam::mpsStructure::beginStep
 (
     const scalar t,
     const scalar fluidDeltaT,
@@ -403,9 +391,9 @@ void Foam::mpsStructure::advance
 {
     if (!active())
     {
-        return;
+        return false;
     }
-    clockValue clock(true);
+    const clockValue clock(true);
 
     if (mag(fluidDeltaT - fluidDeltaT_) > 1e-12*fluidDeltaT)
     {
@@ -418,7 +406,7 @@ void Foam::mpsStructure::advance
         // Held until the release: at rest in the reference state
         toCloud();
         wallTime_ += clock.elapsed();
-        return;
+        return false;
     }
 
     // The body's motion over the step, under the fluid force just solved
@@ -454,9 +442,24 @@ void Foam::mpsStructure::advance
         }
     }
     model_->evaluate();
-    model_->advance(nSubSteps_);
-    totalSubSteps_ += nSubSteps_;
+    model_->startSubSteps();
+    wallTime_ += clock.elapsed();
+    return true;
+}
 
+
+void Foam::mpsStructure::subStep()
+{
+    const clockValue clock(true);
+    model_->subStep();
+    ++totalSubSteps_;
+    wallTime_ += clock.elapsed();
+}
+
+
+void Foam::mpsStructure::endStep(const scalar t)
+{
+    const clockValue clock(true);
     checkFinite(t);
     toCloud();
     wallTime_ += clock.elapsed();

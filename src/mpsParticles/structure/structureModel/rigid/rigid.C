@@ -124,59 +124,49 @@ Foam::structureModels::rigid::rigid
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::structureModels::rigid::advance(const label nSteps)
+void Foam::structureModels::rigid::subStep()
 {
-    if (dt_ <= 0)
-    {
-        FatalErrorInFunction
-            << "The structural time step is not set" << exit(FatalError);
-    }
     const scalar dt = dt_;
-    startEnergyBalance();
-    for (label step = 0; step < nSteps; ++step)
+    // The external forces' resultant and moment about the centre,
+    // constant over the step: their work is F.dxc + T dphi, gravity's
+    // M g.dxc; a prescribed motion's support takes -(F + M g).dxc
+    vector2D F(Zero);
+    scalar T = 0;
+    forAll(f_, i)
     {
-        // The external forces' resultant and moment about the centre,
-        // constant over the step: their work is F.dxc + T dphi, gravity's
-        // M g.dxc; a prescribed motion's support takes -(F + M g).dxc
-        vector2D F(Zero);
-        scalar T = 0;
-        forAll(f_, i)
-        {
-            const vector2D r(x_[i] - xc_);
-            F += f_[i];
-            T += r.x()*f_[i].y() - r.y()*f_[i].x();
-        }
-        const vector2D xc0(xc_);
-        const scalar phi0 = phi_;
+        const vector2D r(x_[i] - xc_);
+        F += f_[i];
+        T += r.x()*f_[i].y() - r.y()*f_[i].x();
+    }
+    const vector2D xc0(xc_);
+    const scalar phi0 = phi_;
 
-        if (prescribed_)
-        {
-            vc_ = clampedVelocity_;
-            xc_ += dt*vc_;
-        }
-        else
-        {
-            vc_ += 0.5*dt*ac_;
-            Omega_ += 0.5*dt*alphaC_;
-            xc_ += dt*vc_;
-            phi_ += dt*Omega_;
-        }
-        time_ += dt;
-        const vector2D dxc(xc_ - xc0);
-        externalWork_ += ((F + M_*g_) & dxc) + T*(phi_ - phi0);
-        if (prescribed_)
-        {
-            supportWork_ -= (F + M_*g_) & dxc;
-        }
-        place();
-        updateAcceleration();
-        if (!prescribed_)
-        {
-            vc_ += 0.5*dt*ac_;
-            Omega_ += 0.5*dt*alphaC_;
-        }
+    if (prescribed_)
+    {
+        vc_ = clampedVelocity_;
+        xc_ += dt*vc_;
+    }
+    else
+    {
+        vc_ += 0.5*dt*ac_;
+        Omega_ += 0.5*dt*alphaC_;
+        xc_ += dt*vc_;
+        phi_ += dt*Omega_;
+    }
+    time_ += dt;
+    const vector2D dxc(xc_ - xc0);
+    externalWork_ += ((F + M_*g_) & dxc) + T*(phi_ - phi0);
+    if (prescribed_)
+    {
+        supportWork_ -= (F + M_*g_) & dxc;
     }
     place();
+    updateAcceleration();
+    if (!prescribed_)
+    {
+        vc_ += 0.5*dt*ac_;
+        Omega_ += 0.5*dt*alphaC_;
+    }
 }
 
 

@@ -523,75 +523,87 @@ void Foam::structureModel::restoreState()
 }
 
 
-void Foam::structureModel::advance(const label nSteps)
+void Foam::structureModel::startSubSteps()
 {
     if (dt_ <= 0)
     {
         FatalErrorInFunction
             << "The structural time step is not set" << exit(FatalError);
     }
+    startEnergyBalance();
+}
+
+
+void Foam::structureModel::subStep()
+{
     const scalar dt = dt_;
     const scalar decay = ::exp(-damping_*dt);
     const scalar m = mass();
     const scalar I = rotationalInertia();
-    startEnergyBalance();
 
+    // Work of the external forces and gravity, constant over the
+    // step: (f + m g).dx, exact for the drift dx
+    scalar work = 0;
+
+    #pragma omp parallel for schedule(static) reduction(+:work)
+    for (label i = 0; i < size(); ++i)
+    {
+        vector2D dx;
+        if (clamped_[i])
+        {
+            v_[i] = clampedVelocity_;
+            dx = dt*clampedVelocity_;
+        }
+        else
+        {
+            v_[i] += 0.5*dt*a_[i];
+            dx = dt*v_[i];
+            omega_[i] += 0.5*dt*alpha_[i];
+            theta_[i] += dt*omega_[i];
+        }
+        x_[i] += dx;
+        work += (f_[i] + m*g_) & dx;
+    }
+    time_ += dt;
+    externalWork_ += work;
+
+    const scalar powerBefore = supportPower_;
+    updateAcceleration();
+    supportWork_ += 0.5*dt*(powerBefore + supportPower_);
+
+    scalar loss = 0;
+
+    #pragma omp parallel for schedule(static) reduction(+:loss)
+    for (label i = 0; i < size(); ++i)
+    {
+        if (!clamped_[i])
+        {
+            v_[i] += 0.5*dt*a_[i];
+            omega_[i] += 0.5*dt*alpha_[i];
+            if (damping_ > 0)
+            {
+                const scalar e =
+                    0.5*m*magSqr(v_[i]) + 0.5*I*sqr(omega_[i]);
+                v_[i] *= decay;
+                omega_[i] *= decay;
+                loss += e*(1 - sqr(decay));
+            }
+        }
+    }
+    dampingLoss_ += loss;
+    if (stiffnessDamping_ > 0)
+    {
+        viscousStep(dt);
+    }
+}
+
+
+void Foam::structureModel::advance(const label nSteps)
+{
+    startSubSteps();
     for (label step = 0; step < nSteps; ++step)
     {
-        // Work of the external forces and gravity, constant over the
-        // step: (f + m g).dx, exact for the drift dx
-        scalar work = 0;
-
-        #pragma omp parallel for schedule(static) reduction(+:work)
-        for (label i = 0; i < size(); ++i)
-        {
-            vector2D dx;
-            if (clamped_[i])
-            {
-                v_[i] = clampedVelocity_;
-                dx = dt*clampedVelocity_;
-            }
-            else
-            {
-                v_[i] += 0.5*dt*a_[i];
-                dx = dt*v_[i];
-                omega_[i] += 0.5*dt*alpha_[i];
-                theta_[i] += dt*omega_[i];
-            }
-            x_[i] += dx;
-            work += (f_[i] + m*g_) & dx;
-        }
-        time_ += dt;
-        externalWork_ += work;
-
-        const scalar powerBefore = supportPower_;
-        updateAcceleration();
-        supportWork_ += 0.5*dt*(powerBefore + supportPower_);
-
-        scalar loss = 0;
-
-        #pragma omp parallel for schedule(static) reduction(+:loss)
-        for (label i = 0; i < size(); ++i)
-        {
-            if (!clamped_[i])
-            {
-                v_[i] += 0.5*dt*a_[i];
-                omega_[i] += 0.5*dt*alpha_[i];
-                if (damping_ > 0)
-                {
-                    const scalar e =
-                        0.5*m*magSqr(v_[i]) + 0.5*I*sqr(omega_[i]);
-                    v_[i] *= decay;
-                    omega_[i] *= decay;
-                    loss += e*(1 - sqr(decay));
-                }
-            }
-        }
-        dampingLoss_ += loss;
-        if (stiffnessDamping_ > 0)
-        {
-            viscousStep(dt);
-        }
+        subStep();
     }
 }
 

@@ -1,0 +1,67 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "couplingScheme.H"
+#include "inputChecks.H"
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::couplingScheme> Foam::couplingScheme::New
+(
+    const dictionary& structureProperties,
+    mpsFluid& fluid,
+    mpsStructure& structure,
+    fluidStructureInterface& interface
+)
+{
+    const dictionary* couplingPtr = structureProperties.findDict("coupling");
+    const dictionary& dict = couplingPtr ? *couplingPtr : dictionary::null;
+    const word schemeType
+    (
+        couplingPtr ? dict.getOrDefault<word>("scheme", "explicit") : "none"
+    );
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(schemeType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'scheme': " << schemeType << " is not valid" << nl
+            << "Valid coupling schemes: "
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    autoPtr<couplingScheme> scheme
+    (
+        cstrIter()(dict, fluid, structure, interface)
+    );
+
+    if (couplingPtr)
+    {
+        wordList valid(fluidStructureInterface::entries());
+        valid.append("scheme");
+        valid.append(scheme->entries());
+        inputChecks::keywords(dict, valid, "coupling");
+    }
+
+    if (interface.active())
+    {
+        Info<< "Coupling scheme " << schemeType << nl << endl;
+    }
+
+    return scheme;
+}
+
+
+// ************************************************************************* //

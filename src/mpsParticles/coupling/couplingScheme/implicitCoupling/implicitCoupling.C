@@ -1,0 +1,200 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpsFsiFoam: MPS hydroelastic slamming
+   \\    /   O peration     | built on OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpsFsiFoam, distributed under the GNU General Public
+    License version 3 or later, as OpenFOAM is.
+
+\*---------------------------------------------------------------------------*/
+
+#include "implicitCoupling.H"
+#include "addToRunTimeSelectionTable.H"
+#include "allRanks.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace couplingSchemes
+{
+    defineTypeNameAndDebug(implicitCoupling, 0);
+    addToRunTimeSelectionTable(couplingScheme, implicitCoupling, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::couplingSchemes::implicitCoupling::implicitCoupling
+(
+    const dictionary& dict,
+    mpsFluid& fluid,
+    mpsStructure& structure,
+    fluidStructureInterface& interface
+)
+:
+    couplingScheme(dict, fluid, structure, interface),
+    maxIterations_(dict.getOrDefault<label>("maxIterations", 50)),
+    tolerance_(dict.getOrDefault<scalar>("tolerance", 1e-3)),
+    lastIterations_(0),
+    totalIterations_(0),
+    nUnconverged_(0)
+{
+    if (interface.fluidPressure())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'scheme' implicit needs 'wallPressure' solved: the"
+            << " fluid's pressure gradients (wallPressure fluid) are"
+            << " computed in the fluid's correction, after the iterations"
+            << exit(FatalIOError);
+    }
+    if (maxIterations_ < 1 || !(tolerance_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries 'maxIterations' (at least 1, got " << maxIterations_
+            << ") and 'tolerance' (above 0, got " << tolerance_ << ")"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::couplingSchemes::implicitCoupling::iterate
+(
+    const scalar t,
+    const scalar deltaT
+)
+{
+    // The walls' velocities enter the pressure through the divergence.
+    // Every rank holds the whole guess: each particle's from its owner
+    boolList owned;
+    const labelList index(interface_.attachedHere(owned));
+    const label n = index.size();
+    List<vector2D> guess(n, Zero), x, U, r(n), rOld(n);
+    forAll(index, k)
+    {
+        if (owned[k])
+        {
+            guess[k] = fluid_.cloud().U()[index[k]];
+        }
+    }
+    combineRanks(guess, plusEqOp<vector2D>());
+    structure_.saveState();
+
+    // Every iteration solves from the step's old pressure (the rate form
+    // of the compressibility reads it)
+    UList<vector2D>& cloudU = fluid_.cloud().U();
+    UList<scalar>& p = fluid_.cloud().p();
+    const scalarList pOld(p);
+    scalar omega = 0.5;
+    lastIterations_ = 0;
+    while (lastIterations_ < maxIterations_)
+    {
+        ++lastIterations_;
+        forAll(index, k)
+        {
+            if (index[k] >= 0)
+            {
+                cloudU[index[k]] = guess[k];
+            }
+        }
+        if (lastIterations_ > 1)
+        {
+            p.deepCopy(pOld);
+        }
+        fluid_.solveStepPressure(deltaT);
+        interface_.transferPressure(fluid_);
+        if (lastIterations_ > 1)
+        {
+            // (the forces took the walls' normals where the last
+            // iteration left them)
+            structure_.restoreState();
+        }
+        advanceStructure(structure_, t, deltaT, interface_.force());
+        interface_.wallMotion(x, U);
+
+        scalar r2 = 0, U2 = 0;
+        forAll(r, k)
+        {
+            r[k] = U[k] - guess[k];
+            r2 += magSqr(r[k]);
+            U2 += magSqr(U[k]);
+        }
+        if (r2 <= sqr(tolerance_)*max(U2, VSMALL))
+        {
+            return true;
+        }
+        if (lastIterations_ > 1)
+        {
+            scalar num = 0, den = 0;
+            forAll(r, k)
+            {
+                const vector2D dr(r[k] - rOld[k]);
+                num += rOld[k] & dr;
+                den += magSqr(dr);
+            }
+            if (den > 0)
+            {
+                omega = -omega*num/den;
+            }
+        }
+        forAll(guess, k)
+        {
+            guess[k] += omega*r[k];
+        }
+        rOld = r;
+    }
+    return false;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::mpsFluid::stepInfo&
+Foam::couplingSchemes::implicitCoupling::evolve
+(
+    const scalar t,
+    const scalar deltaT
+)
+{
+    if (!fluid_.beginStep(deltaT))
+    {
+        if (fluid_.info().finite)
+        {
+            // No fluid: the structure under the walls' last pressures
+            interface_.transferPressure(fluid_);
+            advanceStructure(structure_, t, deltaT, interface_.force());
+            interface_.moveWalls();
+        }
+        return fluid_.info();
+    }
+
+    const bool converged = iterate(t, deltaT);
+    totalIterations_ += lastIterations_;
+    nUnconverged_ += !converged;
+
+    const mpsFluid::stepInfo& info = fluid_.endStep(deltaT);
+    interface_.moveWalls();
+    return info;
+}
+
+
+void Foam::couplingSchemes::implicitCoupling::info(Ostream& os) const
+{
+    os  << "Coupling: " << lastIterations_ << " iterations" << nl;
+}
+
+
+void Foam::couplingSchemes::implicitCoupling::report(Ostream& os) const
+{
+    os  << "Implicit coupling: " << totalIterations_ << " iterations, "
+        << nUnconverged_ << " steps stopped at maxIterations" << nl;
+}
+
+
+// ************************************************************************* //
