@@ -117,7 +117,7 @@ int main(int argc, char *argv[])
         if (runTime.writeTime())
         {
             // (under -parallel each rank writes the particles in its cells)
-            fluid.localise();
+            cloud.localise();
             output.write(cloud);
             fluid.restartPoint();
             lastWritten = runTime.timeName();

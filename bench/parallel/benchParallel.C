@@ -16,7 +16,7 @@ Description
     The parallel building blocks of an MPS step on a case's particles, timed
     on each rank (mpirun -np N benchParallel -parallel, or serial): per
     repetition, every particle moves a little, then
-      exchange   removeHalos, distribute, addHalos (mpsDecomposition)
+      exchange   removeHalos, sendToOwners, addHalos (mpsDecomposition)
       neighbours the neighbour list over owned and halo particles
       rows       global row numbers, the halos' through updateHalos
       assembly   a pressure-like system (the MPS Laplacian's weights and a
@@ -128,7 +128,7 @@ int main(int argc, char *argv[])
                 );
             }
         }
-        decomposition.distribute(cloud);
+        decomposition.sendToOwners(cloud);
         nHalo = decomposition.addHalos(cloud);
         lap(tExchange);
 

@@ -349,7 +349,7 @@ int main(int argc, char *argv[])
     );
 
     label failures = 0;
-    label nSent = decomposition.distribute(local);
+    label nSent = decomposition.sendToOwners(local);
     reduce(nSent, sumOp<label>());
     Info<< "distributed: " << nSent << " particles moved rank" << endl;
     decomposition.addHalos(local);
@@ -369,7 +369,7 @@ int main(int argc, char *argv[])
         }
         c->subset(keep);
     }
-    nSent = decomposition.distribute(local);
+    nSent = decomposition.sendToOwners(local);
     reduce(nSent, sumOp<label>());
     Info<< "moved: " << nSent << " particles changed rank" << endl;
     if (Pstream::parRun() && Pstream::nProcs() > 1 && !nSent)

@@ -119,7 +119,7 @@ int main(int argc, char *argv[])
                 decomposition.owner(local.x()[i]) == Pstream::myProcNo();
         }
         local.subset(keep);
-        parallel.setDecomposition(decomposition);
+        local.setDistribution(decomposition);
     }
 
     serial.evaluate();

@@ -224,7 +224,7 @@ TEST_CASE("free-surface models on a lattice tank")
     {
         const dictionary d(test::dict("freeSurface { type " + type + "; }"));
         List<bool> s(c.size(), false);
-        freeSurfaceModel::New(d, l0)->identify(c, nbrs, w, n0, F0, s);
+        freeSurfaceModel::New(d, l0)->identify(kernelPairs{c, nbrs, w, k(), n0, 0, 1e-3*l0}, F0, s);
         return s;
     };
 
@@ -321,7 +321,7 @@ TEST_CASE("wall tests: water standing off a flat wall, a wall on a wall")
         const List<scalar> w(pairWeights(c, nbrs, k()));
         const dictionary d(test::dict("freeSurface { type " + type + "; }"));
         List<bool> s(c.size(), false);
-        freeSurfaceModel::New(d, l0)->identify(c, nbrs, w, n0, F0, s);
+        freeSurfaceModel::New(d, l0)->identify(kernelPairs{c, nbrs, w, k(), n0, 0, 1e-3*l0}, F0, s);
         label n = 0, total = 0;
         forAll(c.x(), i)
         {
@@ -554,7 +554,7 @@ TEST_CASE("wall test radius: a thin film, the wet front behind its edge")
         List<bool> s(c.size(), false);
         freeSurfaceModel::New(d, l0)->identify
         (
-            c, nbrs, w, k->latticeNumberDensity(l0),
+            kernelPairs{c, nbrs, w, k(), k->latticeNumberDensity(l0), 0, 1e-3*l0},
             k->latticeSurfaceAsymmetry(l0), s
         );
         DynamicList<bool> flags;

@@ -85,7 +85,7 @@ std::pair<scalar, scalar> gradientError
     const dictionary d(test::dict("pressureGradient { " + model + " }"));
     autoPtr<pressureGradient> grad(pressureGradient::New(d));
     List<vector2D> gp;
-    grad->gradient(b.cloud, nbrs, w, n0, sqr(1e-3*l0), b.cloud.p(), gp);
+    grad->gradient(kernelPairs{b.cloud, nbrs, w, k(), n0, 0, 1e-3*l0}, b.cloud.p(), gp);
 
     scalar interior = 0, all = 0;
     forAll(gp, i)
@@ -189,7 +189,7 @@ TEST_CASE("the fluid's pressure carried to the wall is exact for a linear pressu
     {
         const dictionary d(test::dict("pressureGradient { type " + model + "; }"));
         List<vector2D> gp;
-        pressureGradient::New(d)->gradient(b.cloud, nbrs, w, n0, sqr(1e-3*l0), b.cloud.p(), gp);
+        pressureGradient::New(d)->gradient(kernelPairs{b.cloud, nbrs, w, k(), n0, 0, 1e-3*l0}, b.cloud.p(), gp);
         scalar worst = 0;
         label nWall = 0;
         forAll(b.cloud.x(), i)

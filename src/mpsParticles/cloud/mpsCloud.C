@@ -103,7 +103,8 @@ void Foam::mpsCloud::updateIndex()
 
 Foam::mpsCloud::mpsCloud()
 :
-    start_(0)
+    start_(0),
+    distribution_(nullptr)
 {
     addFields();
 }
@@ -123,7 +124,8 @@ Foam::mpsCloud::mpsCloud(const mpsCloud& cloud)
     halo_(cloud.halo_),
     start_(cloud.start_),
     indexOfId_(cloud.indexOfId_),
-    regionNames_(cloud.regionNames_)
+    regionNames_(cloud.regionNames_),
+    distribution_(nullptr)
 {
     addFields();
 }
@@ -143,13 +145,43 @@ Foam::mpsCloud::mpsCloud(mpsCloud&& cloud)
     halo_(std::move(cloud.halo_)),
     start_(cloud.start_),
     indexOfId_(std::move(cloud.indexOfId_)),
-    regionNames_(std::move(cloud.regionNames_))
+    regionNames_(std::move(cloud.regionNames_)),
+    distribution_(nullptr)
 {
     addFields();
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::mpsCloud::setDistribution(cloudDistribution& distribution)
+{
+    distribution_ = &distribution;
+    distribute();
+}
+
+
+void Foam::mpsCloud::distribute()
+{
+    if (distribution_)
+    {
+        distribution_->distribute(*this);
+    }
+}
+
+
+void Foam::mpsCloud::localise()
+{
+    if (distribution_)
+    {
+        distribute();
+        for (const std::function<void()>& f : onLocalise_)
+        {
+            f();
+        }
+    }
+}
+
 
 Foam::labelList Foam::mpsCloud::select
 (

@@ -174,7 +174,7 @@ void Foam::mpsFluid::correct(const scalar dt)
     const UList<particleKind>& kind = cloud_.kind();
     const label n = cloud_.size();
 
-    gradient_->gradient(cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_);
+    gradient_->gradient(pairsG_, cloud_.p(), gradP_);
     syncHalos(gradP_);
 
     scalar maxSpeed2 = 0;
@@ -262,7 +262,6 @@ Foam::mpsFluid::mpsFluid
     g_(Zero),
     l0_(readPositive(dict, "l0")),
     minR_(1e-3*l0_),
-    minR2_(sqr(minR_)),
     kN_(newKernel(dict, "numberDensity", l0_)),
     kG_(newKernel(dict, "gradient", l0_)),
     kL_(newKernel(dict, "laplacian", l0_)),
@@ -274,15 +273,15 @@ Foam::mpsFluid::mpsFluid
     n0V_(kV_->latticeNumberDensity(l0_)),
     lambdaV_(kV_->latticeLambda(l0_)),
     F0_(kN_->latticeSurfaceAsymmetry(l0_)),
-    number_{cloud_, nbrs_, wN_, kN_(), n0N_, kN_->latticeLambda(l0_), minR_},
-    laplacian_{cloud_, nbrs_, wL_, kL_(), n0L_, lambdaL_, minR_},
-    ppe_(cloud_, dict, number_, laplacian_, rho_),
+    pairsN_{cloud_, nbrs_, wN_, kN_(), n0N_, kN_->latticeLambda(l0_), minR_},
+    pairsG_{cloud_, nbrs_, wG_, kG_(), n0G_, kG_->latticeLambda(l0_), minR_},
+    pairsL_{cloud_, nbrs_, wL_, kL_(), n0L_, lambdaL_, minR_},
+    ppe_(cloud_, dict, pairsN_, pairsL_, rho_),
     freeSurface_(freeSurfaceModel::New(dict, l0_)),
     collision_(collisionModel::New(dict)),
     shifting_(particleShifting::New(dict)),
     gradient_(pressureGradient::New(dict)),
     domain_(domain),
-    decomposition_(nullptr),
     exchangeTime_(0)
 {
     if (nu_ < 0)
@@ -293,6 +292,10 @@ Foam::mpsFluid::mpsFluid
     }
     const vector g(dict.get<vector>("g"));
     g_ = vector2D(g.x(), g.y());
+
+    // When the cloud moves particles between ranks (before a write), the
+    // pairs and gradients that fluidPressureAt reads follow them
+    cloud_.onLocalise([this]() { rebuildPairs(); });
 }
 
 
@@ -333,10 +336,7 @@ void Foam::mpsFluid::evaluate()
 {
     updateNeighbours();
     updateNumberDensity();
-    freeSurface_->identify
-    (
-        cloud_, nbrs_, wN_, n0N_, F0_, cloud_.surface()
-    );
+    freeSurface_->identify(pairsN_, F0_, cloud_.surface());
     syncHalos(cloud_.surface());
 }
 
@@ -347,22 +347,36 @@ Foam::scalar Foam::mpsFluid::interactionRadius() const
 }
 
 
-void Foam::mpsFluid::setDecomposition(mpsDecomposition& decomposition)
+void Foam::mpsFluid::info(Ostream& os) const
 {
-    decomposition_ = &decomposition;
-    ppe_.setDecomposition(decomposition);
-    redistribute();
+    os  << "Fluid step:" << nl
+        << "    kernel " << kN_->type() << ", radii [l0]: numberDensity "
+        << kN_->re()/l0_ << ", gradient " << kG_->re()/l0_ << ", laplacian "
+        << kL_->re()/l0_ << ", viscosity " << kV_->re()/l0_ << nl
+        << "    freeSurface ";
+    freeSurface_->info(os);
+    os  << nl << "    collision ";
+    collision_->info(os);
+    os  << nl << "    pressureGradient ";
+    gradient_->info(os);
+    os  << nl << "    shifting ";
+    shifting_->info(os);
+    os  << nl << "    ppe source ";
+    ppe_.source().info(os);
+    os  << nl << "    ppe surfaceCondition ";
+    ppe_.surfaceCondition().info(os);
+    os  << nl << "    pressureSolver ";
+    ppe_.solver().info(os);
+    os  << nl << endl;
 }
 
 
 void Foam::mpsFluid::redistribute()
 {
-    if (decomposition_)
+    if (cloud_.distribution())
     {
         const clockValue clock(true);
-        mpsDecomposition::removeHalos(cloud_);
-        decomposition_->distribute(cloud_);
-        decomposition_->addHalos(cloud_);
+        cloud_.distribute();
         exchangeTime_ += clock.elapsed();
     }
 }
@@ -370,24 +384,9 @@ void Foam::mpsFluid::redistribute()
 
 void Foam::mpsFluid::rebuildPairs()
 {
-    redistribute();
     updateNeighbours();
-    gradient_->gradient
-    (
-        cloud_, nbrs_, wG_, n0G_, minR2_, cloud_.p(), gradP_
-    );
+    gradient_->gradient(pairsG_, cloud_.p(), gradP_);
     syncHalos(gradP_);
-}
-
-
-void Foam::mpsFluid::localise()
-{
-    if (decomposition_)
-    {
-        // The pairs and gradients that fluidPressureAt reads follow the
-        // particles to their ranks
-        rebuildPairs();
-    }
 }
 
 
@@ -442,7 +441,7 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
     info_.nRemoved = removeOutside();
     reduceRanks(info_.nRemoved, sumOp<label>());
     info_.totalRemoved += info_.nRemoved;
-    if (decomposition_ && info_.nRemoved > 0)
+    if (cloud_.distribution() && info_.nRemoved > 0)
     {
         // Halos of particles removed on their rank would refresh no more
         redistribute();
@@ -453,10 +452,7 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
     lap(info_.timeNeighbours);
 
     updateNumberDensity();
-    freeSurface_->identify
-    (
-        cloud_, nbrs_, wN_, n0N_, F0_, cloud_.surface()
-    );
+    freeSurface_->identify(pairsN_, F0_, cloud_.surface());
     syncHalos(cloud_.surface());
     info_.nSurface = 0;
     forAll(cloud_.surface(), i)
@@ -497,6 +493,8 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
     {
         // The pairs and gradients that fluidPressureAt reads belong to
         // the particles before the removal: rebuilt for those that remain
+        // (the halos of removed particles with them)
+        redistribute();
         rebuildPairs();
     }
     info_.maxShift = shifting_->shift(cloud_, nbrs_, l0_, kN_->re(), dt);

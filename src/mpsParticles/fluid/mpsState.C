@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsState.H"
+#include "lookupRegistered.H"
 #include "Time.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -52,15 +53,10 @@ Foam::mpsState::mpsState
 
 const Foam::mpsState& Foam::mpsState::lookup(const objectRegistry& db)
 {
-    const mpsState* ptr = db.findObject<mpsState>(typeName);
-    if (!ptr)
-    {
-        FatalErrorInFunction
-            << "No MPS particles in " << db.name() << ": this function"
-            << " object works with the mpsFsiFoam solver"
-            << exit(FatalError);
-    }
-    return *ptr;
+    return lookupRegistered<mpsState>
+    (
+        db, "MPS particles", "the mpsFsiFoam solver"
+    );
 }
 
 

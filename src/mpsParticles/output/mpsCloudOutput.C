@@ -24,8 +24,7 @@ Foam::mpsCloudOutput::mpsCloudOutput(const polyMesh& mesh)
     mesh_(mesh),
     lagrangian_(mesh),
     vtk_(mesh.time()),
-    writeVTK_(mesh.time().controlDict().getOrDefault<bool>("writeVTK", true)),
-    decomposition_(nullptr)
+    writeVTK_(mesh.time().controlDict().getOrDefault<bool>("writeVTK", true))
 {}
 
 
@@ -75,7 +74,7 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
 
     const boolList written
     (
-        decomposition_ ? decomposition_->writtenHere(cloud) : boolList()
+        cloud.distribution() ? cloud.distribution()->writtenHere(cloud) : boolList()
     );
     // A serial run writes its particles in the order of their cells:
     // v1912's decomposePar writes a processor's positions in cell order
@@ -85,7 +84,7 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
     // particles back in it and continues exactly (the writer finds the
     // cells again for the positions file: at write times only)
     labelList cellOrder;
-    if (!decomposition_)
+    if (!cloud.distribution())
     {
         cellOrder.setSize(cloud.size());
         forAll(cellOrder, i)

@@ -251,7 +251,7 @@ void Foam::mpsDecomposition::nearRanks
 }
 
 
-Foam::label Foam::mpsDecomposition::distribute(mpsCloud& cloud) const
+Foam::label Foam::mpsDecomposition::sendToOwners(mpsCloud& cloud) const
 {
     if (!Pstream::parRun())
     {
@@ -383,6 +383,14 @@ Foam::boolList Foam::mpsDecomposition::writtenHere
          && (!replicated(cloud.kind()[i]) || inMyCells(cloud.x()[i]));
     }
     return written;
+}
+
+
+void Foam::mpsDecomposition::distribute(mpsCloud& cloud)
+{
+    removeHalos(cloud);
+    sendToOwners(cloud);
+    addHalos(cloud);
 }
 
 

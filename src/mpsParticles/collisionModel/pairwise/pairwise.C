@@ -125,4 +125,10 @@ Foam::label Foam::collisionModels::pairwise::correct
 }
 
 
+void Foam::collisionModels::pairwise::info(Ostream& os) const
+{
+    os  << type() << " (alpha " << alpha_ << ", e " << e_ << ')';
+}
+
+
 // ************************************************************************* //

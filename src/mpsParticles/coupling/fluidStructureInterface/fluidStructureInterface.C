@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fluidStructureInterface.H"
+#include "lookupRegistered.H"
 #include "Time.H"
 #include "clockValue.H"
 #include "allRanks.H"
@@ -389,17 +390,14 @@ const Foam::fluidStructureInterface& Foam::fluidStructureInterface::lookup
     const objectRegistry& db
 )
 {
-    const fluidStructureInterface* ptr =
-        db.findObject<fluidStructureInterface>(typeName);
-    if (!ptr || !ptr->active())
-    {
-        FatalErrorInFunction
-            << "No fluid-structure interface in " << db.name() << ": this"
-            << " function object needs the mpsFsiFoam solver and an entry"
-            << " 'coupling' in constant/structureProperties"
-            << exit(FatalError);
-    }
-    return *ptr;
+    return lookupRegistered<fluidStructureInterface>
+    (
+        db,
+        "fluid-structure interface",
+        "the mpsFsiFoam solver and an entry 'coupling' in"
+        " constant/structureProperties",
+        &fluidStructureInterface::active
+    );
 }
 
 

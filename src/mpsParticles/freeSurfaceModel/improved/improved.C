@@ -139,14 +139,15 @@ Foam::freeSurfaceModels::improved::improved
 
 void Foam::freeSurfaceModels::improved::identify
 (
-    const mpsCloud& cloud,
-    const neighbourList& nbrs,
-    const UList<scalar>& w,
-    const scalar n0,
+    const kernelPairs& pairs,
     const scalar F0,
     UList<bool>& surface
 ) const
 {
+    const mpsCloud& cloud = pairs.cloud;
+    const neighbourList& nbrs = pairs.pairs;
+    const UList<scalar>& w = pairs.w;
+    const scalar n0 = pairs.n0;
     surface = false;
     asymmetryTest
     (
@@ -171,6 +172,19 @@ void Foam::freeSurfaceModels::improved::identify
             cloud, wallBeta_, n0, particleKind::wall, surface
         );
     }
+}
+
+
+void Foam::freeSurfaceModels::improved::info(Ostream& os) const
+{
+    os  << type() << " (beta " << beta_ << ", asymmetry " << asymmetry_
+        << ", wallTest " << wallTestTypeNames[wallTest_] << ", wallBeta "
+        << wallBeta_;
+    if (wallKernel_.valid())
+    {
+        os  << ", wallRadius " << wallKernel_->re()/l0_ << " l0";
+    }
+    os  << ')';
 }
 
 

@@ -53,14 +53,15 @@ Foam::freeSurfaceModels::neighbourAsymmetry::neighbourAsymmetry
 
 void Foam::freeSurfaceModels::neighbourAsymmetry::identify
 (
-    const mpsCloud& cloud,
-    const neighbourList& nbrs,
-    const UList<scalar>& w,
-    const scalar n0,
+    const kernelPairs& pairs,
     const scalar F0,
     UList<bool>& surface
 ) const
 {
+    const mpsCloud& cloud = pairs.cloud;
+    const neighbourList& nbrs = pairs.pairs;
+    const UList<scalar>& w = pairs.w;
+    const scalar n0 = pairs.n0;
     surface = false;
     for (const particleKind k : {particleKind::fluid, particleKind::wall})
     {
@@ -69,6 +70,13 @@ void Foam::freeSurfaceModels::neighbourAsymmetry::identify
             cloud, nbrs, w, n0, F0, beta_, asymmetry_, k, surface
         );
     }
+}
+
+
+void Foam::freeSurfaceModels::neighbourAsymmetry::info(Ostream& os) const
+{
+    os  << type() << " (beta " << beta_ << ", asymmetry " << asymmetry_
+        << ')';
 }
 
 

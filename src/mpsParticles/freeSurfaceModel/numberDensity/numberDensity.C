@@ -47,17 +47,22 @@ Foam::freeSurfaceModels::numberDensity::numberDensity
 
 void Foam::freeSurfaceModels::numberDensity::identify
 (
-    const mpsCloud& cloud,
-    const neighbourList& nbrs,
-    const UList<scalar>& w,
-    const scalar n0,
+    const kernelPairs& pairs,
     const scalar F0,
     UList<bool>& surface
 ) const
 {
     surface = false;
-    numberDensityTest(cloud, beta_, n0, particleKind::fluid, surface);
-    numberDensityTest(cloud, beta_, n0, particleKind::wall, surface);
+    for (const particleKind kind : {particleKind::fluid, particleKind::wall})
+    {
+        numberDensityTest(pairs.cloud, beta_, pairs.n0, kind, surface);
+    }
+}
+
+
+void Foam::freeSurfaceModels::numberDensity::info(Ostream& os) const
+{
+    os  << type() << " (beta " << beta_ << ')';
 }
 
 

@@ -14,7 +14,6 @@ License
 #include "strainProbes.H"
 #include "inputChecks.H"
 #include "mpsStructure.H"
-#include "mpsState.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -86,9 +85,8 @@ void Foam::functionObjects::strainProbes::locate()
 }
 
 
-void Foam::functionObjects::strainProbes::writeFileHeader()
+void Foam::functionObjects::strainProbes::writeFileHeader(OFstream& os)
 {
-    OFstream& os = file();
     writeHeader(os, "Strain gauges: axial strain along the panel at its face,"
         " tension positive");
     forAll(gauges_, i)
@@ -117,10 +115,8 @@ Foam::functionObjects::strainProbes::strainProbes
     const dictionary& dict
 )
 :
-    fvMeshFunctionObject(name, runTime, dict),
-    logFiles(mesh_, name),
-    located_(false),
-    headerWritten_(false)
+    timeSeriesFile(name, runTime, dict, "strain"),
+    located_(false)
 {
     read(dict);
 
@@ -128,7 +124,7 @@ Foam::functionObjects::strainProbes::strainProbes
     // panel stops the run before any file is opened
     const mpsStructure* structure =
         mesh_.findObject<mpsStructure>(mpsStructure::typeName);
-    if (mesh_.foundObject<mpsState>(mpsState::typeName))
+    if (inSolver())
     {
         // In the solver: a case without structure stops here
         mpsStructure::lookup(mesh_);
@@ -144,14 +140,7 @@ Foam::functionObjects::strainProbes::strainProbes
 
 bool Foam::functionObjects::strainProbes::read(const dictionary& dict)
 {
-    fvMeshFunctionObject::read(dict);
-    inputChecks::keywords
-    (
-        dict,
-        inputChecks::functionObjectKeywords({"gauges"}),
-        "function object " + name()
-    );
-    logFiles::read(dict);
+    readEntries(dict, {"gauges"});
 
     const dictionary& gaugesDict = inputChecks::subDict(dict, "gauges");
     gauges_.setSize(gaugesDict.size());
@@ -196,39 +185,25 @@ bool Foam::functionObjects::strainProbes::read(const dictionary& dict)
 }
 
 
-bool Foam::functionObjects::strainProbes::write()
+void Foam::functionObjects::strainProbes::update()
 {
     if (!located_)
     {
         locate();
     }
-    if (!headerWritten_)
-    {
-        // The file is opened at the first write: a run that stops before
-        // leaves the file of an earlier run as it was
-        resetName("strain");
-        if (Pstream::master())
-        {
-            writeFileHeader();
-        }
-        headerWritten_ = true;
-    }
+}
+
+
+void Foam::functionObjects::strainProbes::writeValues(OFstream& os)
+{
     const structureModel& s = mpsStructure::lookup(mesh_).model();
     const scalar dn = 0.5*s.spacing();
-
-    if (Pstream::master())
+    for (const gauge& g : gauges_)
     {
-        OFstream& os = file();
-        writeCurrentTime(os);
-        for (const gauge& g : gauges_)
-        {
-            const scalar ea = s.axialStrain(g.a, g.axis, g.normal, dn);
-            const scalar eb = s.axialStrain(g.b, g.axis, g.normal, dn);
-            os  << tab << (1 - g.weight)*ea + g.weight*eb;
-        }
-        os  << endl;
+        const scalar ea = s.axialStrain(g.a, g.axis, g.normal, dn);
+        const scalar eb = s.axialStrain(g.b, g.axis, g.normal, dn);
+        os  << tab << (1 - g.weight)*ea + g.weight*eb;
     }
-    return true;
 }
 
 

@@ -12,9 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "structureEnergy.H"
-#include "inputChecks.H"
 #include "mpsStructure.H"
-#include "mpsState.H"
 #include "fluidStructureInterface.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -39,18 +37,63 @@ Foam::functionObjects::structureEnergy::structureEnergy
     const dictionary& dict
 )
 :
-    fvMeshFunctionObject(name, runTime, dict),
-    logFiles(mesh_, name),
-    headerWritten_(false)
+    timeSeriesFile(name, runTime, dict, "energy")
 {
     read(dict);
 
-    // In the solver (the particles registered), a case without a
-    // structure stops here, before anything is written
-    if (mesh_.foundObject<mpsState>(mpsState::typeName))
+    // In the solver, a case without a structure stops here, before
+    // anything is written
+    if (inSolver())
     {
         mpsStructure::lookup(mesh_);
     }
+}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+void Foam::functionObjects::structureEnergy::writeFileHeader(OFstream& os)
+{
+    const structureModel& s = mpsStructure::lookup(mesh_).model();
+    writeHeader(os, "Energy balance of the structure [J/m]");
+    writeHeaderValue(os, "kinetic + strain at the start", s.initialEnergy());
+    writeCommented(os, "Time");
+    for
+    (
+        const word c
+      : {
+            "kinetic", "strain", "work", "fluidWork", "motionWork",
+            "damping", "balance", "wallWork"
+        }
+    )
+    {
+        writeTabbed(os, c);
+    }
+    os  << endl;
+}
+
+
+void Foam::functionObjects::structureEnergy::writeValues(OFstream& os)
+{
+    const structureModel& s = mpsStructure::lookup(mesh_).model();
+    const scalar kinetic = s.kineticEnergy();
+    const scalar strain = s.strainEnergy();
+    const scalar work = s.externalWork() + s.supportWork();
+    const scalar balance =
+        kinetic + strain - s.initialEnergy() - work + s.dampingLoss();
+
+    // The fluid's work along the walls' motion (0 without a coupling)
+    const fluidStructureInterface* fsi =
+        mesh_.findObject<fluidStructureInterface>
+        (
+            fluidStructureInterface::typeName
+        );
+    const scalar wallWork = fsi ? fsi->wallWork() : 0;
+
+    os  << tab << kinetic << tab << strain << tab << work
+        << tab << s.externalWork() << tab << s.supportWork()
+        << tab << s.dampingLoss() << tab << balance
+        << tab << wallWork;
 }
 
 
@@ -58,75 +101,7 @@ Foam::functionObjects::structureEnergy::structureEnergy
 
 bool Foam::functionObjects::structureEnergy::read(const dictionary& dict)
 {
-    fvMeshFunctionObject::read(dict);
-    inputChecks::keywords
-    (
-        dict,
-        inputChecks::functionObjectKeywords({}),
-        "function object " + name()
-    );
-    logFiles::read(dict);
-    return true;
-}
-
-
-bool Foam::functionObjects::structureEnergy::write()
-{
-    const structureModel& s = mpsStructure::lookup(mesh_).model();
-
-    if (!headerWritten_)
-    {
-        // Opened at the first write: a run stopped before leaves the file
-        // of an earlier run as it was
-        resetName("energy");
-        if (Pstream::master())
-        {
-            OFstream& os = file();
-            writeHeader(os, "Energy balance of the structure [J/m]");
-            writeHeaderValue
-            (
-                os, "kinetic + strain at the start", s.initialEnergy()
-            );
-            writeCommented(os, "Time");
-            for
-            (
-                const word& c
-              : {
-                    "kinetic", "strain", "work", "fluidWork", "motionWork",
-                    "damping", "balance", "wallWork"
-                }
-            )
-            {
-                writeTabbed(os, c);
-            }
-            os  << endl;
-        }
-        headerWritten_ = true;
-    }
-
-    if (Pstream::master())
-    {
-        const scalar kinetic = s.kineticEnergy();
-        const scalar strain = s.strainEnergy();
-        const scalar work = s.externalWork() + s.supportWork();
-        const scalar balance =
-            kinetic + strain - s.initialEnergy() - work + s.dampingLoss();
-
-        // The fluid's work along the walls' motion (0 without a coupling)
-        const fluidStructureInterface* fsi =
-            mesh_.findObject<fluidStructureInterface>
-            (
-                fluidStructureInterface::typeName
-            );
-        const scalar wallWork = fsi ? fsi->wallWork() : 0;
-
-        OFstream& os = file();
-        writeCurrentTime(os);
-        os  << tab << kinetic << tab << strain << tab << work
-            << tab << s.externalWork() << tab << s.supportWork()
-            << tab << s.dampingLoss() << tab << balance
-            << tab << wallWork << endl;
-    }
+    readEntries(dict, {});
     return true;
 }
 

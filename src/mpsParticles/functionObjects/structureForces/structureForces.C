@@ -12,9 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "structureForces.H"
-#include "inputChecks.H"
 #include "fluidStructureInterface.H"
-#include "mpsState.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -38,18 +36,35 @@ Foam::functionObjects::structureForces::structureForces
     const dictionary& dict
 )
 :
-    fvMeshFunctionObject(name, runTime, dict),
-    logFiles(mesh_, name),
-    headerWritten_(false)
+    timeSeriesFile(name, runTime, dict, "force")
 {
     read(dict);
 
-    // In the solver (the particles registered), a case without coupling
-    // stops here, before anything is written
-    if (mesh_.foundObject<mpsState>(mpsState::typeName))
+    // In the solver, a case without coupling stops here, before anything
+    // is written
+    if (inSolver())
     {
         fluidStructureInterface::lookup(mesh_);
     }
+}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+void Foam::functionObjects::structureForces::writeFileHeader(OFstream& os)
+{
+    writeHeader(os, "Force of the fluid on the structure [N/m]");
+    writeCommented(os, "Time");
+    writeTabbed(os, "Fx");
+    writeTabbed(os, "Fy");
+    os  << endl;
+}
+
+
+void Foam::functionObjects::structureForces::writeValues(OFstream& os)
+{
+    const vector2D& F = fluidStructureInterface::lookup(mesh_).fluidForce();
+    os  << tab << F.x() << tab << F.y();
 }
 
 
@@ -57,47 +72,7 @@ Foam::functionObjects::structureForces::structureForces
 
 bool Foam::functionObjects::structureForces::read(const dictionary& dict)
 {
-    fvMeshFunctionObject::read(dict);
-    inputChecks::keywords
-    (
-        dict,
-        inputChecks::functionObjectKeywords({}),
-        "function object " + name()
-    );
-    logFiles::read(dict);
-    return true;
-}
-
-
-bool Foam::functionObjects::structureForces::write()
-{
-    const fluidStructureInterface& fsi =
-        fluidStructureInterface::lookup(mesh_);
-
-    if (!headerWritten_)
-    {
-        // Opened at the first write: a run stopped before leaves the file
-        // of an earlier run as it was
-        resetName("force");
-        if (Pstream::master())
-        {
-            OFstream& os = file();
-            writeHeader(os, "Force of the fluid on the structure [N/m]");
-            writeCommented(os, "Time");
-            writeTabbed(os, "Fx");
-            writeTabbed(os, "Fy");
-            os  << endl;
-        }
-        headerWritten_ = true;
-    }
-
-    if (Pstream::master())
-    {
-        OFstream& os = file();
-        writeCurrentTime(os);
-        os  << tab << fsi.fluidForce().x() << tab << fsi.fluidForce().y()
-            << endl;
-    }
+    readEntries(dict, {});
     return true;
 }
 

@@ -14,7 +14,6 @@ License
 #include "structureProbes.H"
 #include "inputChecks.H"
 #include "mpsStructure.H"
-#include "mpsState.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -31,9 +30,8 @@ namespace functionObjects
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::structureProbes::writeFileHeader()
+void Foam::functionObjects::structureProbes::writeFileHeader(OFstream& os)
 {
-    OFstream& os = file();
     writeHeader(os, "Structure probes: displacement [m]");
     forAll(points_, i)
     {
@@ -98,9 +96,7 @@ Foam::functionObjects::structureProbes::structureProbes
     const dictionary& dict
 )
 :
-    fvMeshFunctionObject(name, runTime, dict),
-    logFiles(mesh_, name),
-    headerWritten_(false)
+    timeSeriesFile(name, runTime, dict, "displacement")
 {
     read(dict);
 
@@ -108,7 +104,7 @@ Foam::functionObjects::structureProbes::structureProbes
     // structure stops the run before anything is written
     const mpsStructure* structure =
         mesh_.findObject<mpsStructure>(mpsStructure::typeName);
-    if (mesh_.foundObject<mpsState>(mpsState::typeName))
+    if (inSolver())
     {
         // In the solver: a case without structure stops here
         mpsStructure::lookup(mesh_);
@@ -124,14 +120,7 @@ Foam::functionObjects::structureProbes::structureProbes
 
 bool Foam::functionObjects::structureProbes::read(const dictionary& dict)
 {
-    fvMeshFunctionObject::read(dict);
-    inputChecks::keywords
-    (
-        dict,
-        inputChecks::functionObjectKeywords({"probes"}),
-        "function object " + name()
-    );
-    logFiles::read(dict);
+    readEntries(dict, {"probes"});
 
     const dictionary& probes = inputChecks::subDict(dict, "probes");
     names_ = probes.toc();
@@ -151,48 +140,32 @@ bool Foam::functionObjects::structureProbes::read(const dictionary& dict)
 }
 
 
-bool Foam::functionObjects::structureProbes::write()
+void Foam::functionObjects::structureProbes::update()
+{
+    if (carriers_.empty())
+    {
+        locate(mpsStructure::lookup(mesh_).model());
+    }
+}
+
+
+void Foam::functionObjects::structureProbes::writeValues(OFstream& os)
 {
     const structureModel& s = mpsStructure::lookup(mesh_).model();
     const List<vector2D>& X = s.X();
-
-    if (!headerWritten_)
+    forAll(points_, i)
     {
-        // The file is opened at the first write: a run that stops before
-        // (bad input elsewhere) leaves the file of an earlier run as it was
-        resetName("displacement");
-        if (Pstream::master())
+        vector2D u(Zero);
+        for (const label k : carriers_[i])
         {
-            writeFileHeader();
+            const vector2D r(points_[i] - X[k]);
+            u +=
+                s.displacement(k)
+              + structureModel::rotate(s.theta()[k], r) - r;
         }
-        headerWritten_ = true;
+        u /= carriers_[i].size();
+        os  << tab << u.x() << tab << u.y();
     }
-
-    if (carriers_.empty())
-    {
-        locate(s);
-    }
-
-    if (Pstream::master())
-    {
-        OFstream& os = file();
-        writeCurrentTime(os);
-        forAll(points_, i)
-        {
-            vector2D u(Zero);
-            for (const label k : carriers_[i])
-            {
-                const vector2D r(points_[i] - X[k]);
-                u +=
-                    s.displacement(k)
-                  + structureModel::rotate(s.theta()[k], r) - r;
-            }
-            u /= carriers_[i].size();
-            os  << tab << u.x() << tab << u.y();
-        }
-        os  << endl;
-    }
-    return true;
 }
 
 

@@ -285,4 +285,11 @@ Foam::scalar Foam::particleShiftings::fickian::shift
 }
 
 
+void Foam::particleShiftings::fickian::info(Ostream& os) const
+{
+    os  << type() << " (diffusion " << diffusionTypeNames[diffusion_]
+        << ", A " << A_ << ", maxShift " << maxShift_ << " l0)";
+}
+
+
 // ************************************************************************* //

@@ -103,7 +103,7 @@ Foam::label Foam::pressureEquation::setUnknowns()
 
     rowStart_ = 0;
     nGlobalRows_ = nUnknowns;
-    if (decomposition_)
+    if (cloud_.distribution())
     {
         const globalIndex rows(nUnknowns);
         rowStart_ = rows.offset(Pstream::myProcNo());
@@ -115,7 +115,7 @@ Foam::label Foam::pressureEquation::setUnknowns()
                 row += rowStart_;
             }
         }
-        decomposition_->updateHalos(cloud_, unknown_);
+        cloud_.syncHalos(unknown_);
     }
 
     return nUnknowns;
@@ -264,7 +264,7 @@ Foam::scalar Foam::pressureEquation::residual
     const Eigen::VectorXd& sol
 ) const
 {
-    if (!decomposition_)
+    if (!cloud_.distribution())
     {
         const scalar bNorm = b.norm();
         return bNorm > 0 ? (b - A*sol).norm()/bNorm : scalar(0);
@@ -329,7 +329,6 @@ Foam::pressureEquation::pressureEquation
     clampNegative_(true),
     rowStart_(0),
     nGlobalRows_(0),
-    decomposition_(nullptr),
     nSolved_(0),
     initialResidual_(0),
     assemblyTime_(0),
@@ -344,7 +343,7 @@ Foam::pressureEquation::pressureEquation
 
     Info<< "Pressure equation: source " << source_->type()
         << ", surfaceCondition " << surface_->type();
-    source_->info(Info);
+    source_->writeRelaxation(Info);
     if (compressibility_ > 0)
     {
         Info<< ", compressibility " << compressibility_ << " 1/Pa ("
@@ -412,7 +411,7 @@ void Foam::pressureEquation::solve(const scalar dt)
 
     const clockValue solveClock(true);
     performance_ =
-        decomposition_
+        cloud_.distribution()
       ? solver_->solve(A, b, sol, rowStart_)
       : solver_->solve(A, b, sol);
     solveTime_ = solveClock.elapsed();
@@ -429,10 +428,7 @@ void Foam::pressureEquation::solve(const scalar dt)
             p[i] = (clampNegative_ && sol[row] < 0) ? 0 : sol[row];
         }
     }
-    if (decomposition_)
-    {
-        decomposition_->updateHalos(cloud_, p);
-    }
+    cloud_.syncHalos(p);
     assemblyTime_ = clock.elapsed() - solveTime_;
 }
 

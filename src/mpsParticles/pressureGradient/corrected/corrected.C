@@ -63,15 +63,16 @@ Foam::pressureGradients::corrected::corrected(const dictionary& dict)
 
 void Foam::pressureGradients::corrected::gradient
 (
-    const mpsCloud& cloud,
-    const neighbourList& nbrs,
-    const UList<scalar>& w,
-    const scalar n0,
-    const scalar minR2,
+    const kernelPairs& pairs,
     const UList<scalar>& p,
     List<vector2D>& grad
 ) const
 {
+    const mpsCloud& cloud = pairs.cloud;
+    const neighbourList& nbrs = pairs.pairs;
+    const UList<scalar>& w = pairs.w;
+    const scalar n0 = pairs.n0;
+    const scalar minR2 = sqr(pairs.minR);
     const UList<vector2D>& x = cloud.x();
     const UList<particleKind>& kind = cloud.kind();
     const labelList& offsets = nbrs.offsets();
@@ -126,6 +127,13 @@ void Foam::pressureGradients::corrected::gradient
             grad[i] = minimumGradient(cloud, nbrs, w, n0, minR2, p, i);
         }
     }
+}
+
+
+void Foam::pressureGradients::corrected::info(Ostream& os) const
+{
+    os  << type() << " (particleReference " << particleReference_
+        << ", minDeterminant " << minDeterminant_ << ')';
 }
 
 

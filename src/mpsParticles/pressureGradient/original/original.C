@@ -41,15 +41,16 @@ Foam::pressureGradients::original::original(const dictionary& dict)
 
 void Foam::pressureGradients::original::gradient
 (
-    const mpsCloud& cloud,
-    const neighbourList& nbrs,
-    const UList<scalar>& w,
-    const scalar n0,
-    const scalar minR2,
+    const kernelPairs& pairs,
     const UList<scalar>& p,
     List<vector2D>& grad
 ) const
 {
+    const mpsCloud& cloud = pairs.cloud;
+    const neighbourList& nbrs = pairs.pairs;
+    const UList<scalar>& w = pairs.w;
+    const scalar n0 = pairs.n0;
+    const scalar minR2 = sqr(pairs.minR);
     const UList<particleKind>& kind = cloud.kind();
     const label n = cloud.size();
 

@@ -345,4 +345,12 @@ void Foam::pressureSolvers::BoomerAMG::restartPoint()
 }
 
 
+void Foam::pressureSolvers::BoomerAMG::info(Ostream& os) const
+{
+    os  << type() << " (tolerance " << tolerance_ << ", maxIter "
+        << maxIter_ << ", strongThreshold " << strongThreshold_
+        << ", reuse " << reuse_ << ')';
+}
+
+
 // ************************************************************************* //

@@ -125,4 +125,11 @@ Foam::pressureSolver::performance Foam::pressureSolvers::PCG::solve
 }
 
 
+void Foam::pressureSolvers::PCG::info(Ostream& os) const
+{
+    os  << type() << " (tolerance " << tolerance_ << ", maxIter "
+        << maxIter_ << ')';
+}
+
+
 // ************************************************************************* //

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpsStructure.H"
+#include "lookupRegistered.H"
 #include "lagrangianCloudReader.H"
 #include "inputChecks.H"
 #include "Time.H"
@@ -644,15 +645,13 @@ const Foam::mpsStructure& Foam::mpsStructure::lookup
     const objectRegistry& db
 )
 {
-    const mpsStructure* ptr = db.findObject<mpsStructure>(typeName);
-    if (!ptr || !ptr->active())
-    {
-        FatalErrorInFunction
-            << "No structure in " << db.name() << ": this function object"
-            << " works with the mpsFsiFoam solver and structure particles"
-            << exit(FatalError);
-    }
-    return *ptr;
+    return lookupRegistered<mpsStructure>
+    (
+        db,
+        "structure",
+        "the mpsFsiFoam solver and structure particles",
+        &mpsStructure::active
+    );
 }
 
 

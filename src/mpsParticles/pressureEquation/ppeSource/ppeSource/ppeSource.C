@@ -76,6 +76,17 @@ void Foam::ppeSource::readRelaxation()
 
 void Foam::ppeSource::info(Ostream& os) const
 {
+    os  << type();
+    writeRelaxation(os);
+    if (fillVoids_)
+    {
+        os  << ", fillVoids";
+    }
+}
+
+
+void Foam::ppeSource::writeRelaxation(Ostream& os) const
+{
     if (relaxationTime_ > 0)
     {
         os  << ", relaxationTime " << relaxationTime_ << " s";
