@@ -927,6 +927,24 @@ TEST_CASE("relaxationTime: the density term as a share of the error per unit tim
         mpsFluid(c, ppeFluidDict("relaxationTime 1e-3;", "numberDensity"), domain),
         Contains("not to numberDensity")
     );
+    // (each source checks its own entries: the numberDensity source, whose
+    // density error is the whole source, has no relaxation to set)
+    for (const std::string entry : {"relaxation 0.05;", "fillVoids yes;"})
+    {
+        INFO(entry);
+        CHECK_THROWS_WITH
+        (
+            mpsFluid(c, ppeFluidDict(entry, "numberDensity"), domain),
+            Contains("not to numberDensity")
+        );
+    }
+    // An entry no part of the equation reads is refused, naming the
+    // nearest valid one (the source's entries among them)
+    CHECK_THROWS_WITH
+    (
+        mpsFluid(c, ppeFluidDict("relaxationTme 1e-3;"), domain),
+        Contains("relaxationTime")
+    );
     CHECK_THROWS_WITH
     (
         mpsFluid(c, ppeFluidDict("relaxationTime 1e-3; compressibility 1e-8;"), domain),

@@ -16,6 +16,32 @@ License
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
+Foam::word Foam::couplingScheme::selectedType
+(
+    const dictionary& structureProperties
+)
+{
+    const dictionary* couplingPtr = structureProperties.findDict("coupling");
+    if (!couplingPtr)
+    {
+        return "none";
+    }
+    const word schemeType
+    (
+        couplingPtr->getOrDefault<word>("scheme", "explicit")
+    );
+    if (!dictionaryConstructorTablePtr_->found(schemeType))
+    {
+        FatalIOErrorInFunction(*couplingPtr)
+            << "Entry 'scheme': " << schemeType << " is not valid" << nl
+            << "Valid coupling schemes: "
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+    return schemeType;
+}
+
+
 Foam::autoPtr<Foam::couplingScheme> Foam::couplingScheme::New
 (
     const dictionary& structureProperties,
@@ -24,27 +50,16 @@ Foam::autoPtr<Foam::couplingScheme> Foam::couplingScheme::New
     fluidStructureInterface& interface
 )
 {
+    const word schemeType(selectedType(structureProperties));
     const dictionary* couplingPtr = structureProperties.findDict("coupling");
     const dictionary& dict = couplingPtr ? *couplingPtr : dictionary::null;
-    const word schemeType
-    (
-        couplingPtr ? dict.getOrDefault<word>("scheme", "explicit") : "none"
-    );
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(schemeType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'scheme': " << schemeType << " is not valid" << nl
-            << "Valid coupling schemes: "
-            << dictionaryConstructorTablePtr_->sortedToc()
-            << exit(FatalIOError);
-    }
 
     autoPtr<couplingScheme> scheme
     (
-        cstrIter()(dict, fluid, structure, interface)
+        dictionaryConstructorTablePtr_->cfind(schemeType)()
+        (
+            dict, fluid, structure, interface
+        )
     );
 
     if (couplingPtr)
