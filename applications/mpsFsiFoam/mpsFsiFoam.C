@@ -61,6 +61,9 @@ Description
 #include "inputChecks.H"
 #include "IFstream.H"
 #include <fenv.h>
+#include <cstring>
+#include <cerrno>
+#include <fstream>
 #include <omp.h>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -80,6 +83,7 @@ int main(int argc, char *argv[])
     #include "checkLatestTime.H"
     #include "createTime.H"
     #include "checkStartTime.H"
+    #include "checkWritable.H"
 
     // The solver checks every step for values that are not finite and stops
     // with a message naming the step: floating-point traps would abort it

@@ -110,6 +110,14 @@ Foam::freeSurfaceModels::improved::improved
         {"type", "beta", "asymmetry", "wallTest", "wallBeta", "wallRadius"},
         "freeSurface improved"
     );
+    if (wallTest_ != wallTestType::numberDensity && dict.found("wallBeta"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'wallBeta' is the numberDensity wall test's threshold,"
+            << " not wallTest " << wallTestTypeNames[wallTest_]
+            << "'s (it would be ignored): remove it, or use wallTest"
+            << " numberDensity" << exit(FatalIOError);
+    }
     if (dict.found("wallRadius"))
     {
         // The kernel radii's own range (re, mpsFluid)

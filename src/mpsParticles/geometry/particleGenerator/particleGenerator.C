@@ -190,17 +190,19 @@ void Foam::particleGenerator::checkSize(const dictionary& regionsDict) const
         n += particleShape::New(e.dict())->estimatedCount(spacing);
     }
 
+    const bool limited = dict_.found("maxParticles");
     const scalar maxParticles =
-        dict_.getOrDefault<scalar>("maxParticles", GREAT);
+        limited ? dict_.get<scalar>("maxParticles") : GREAT;
     const scalar available = availableMemory();
-    if (n > maxParticles || n*bytesPerParticle > available)
+    if ((limited && n > maxParticles) || n*bytesPerParticle > available)
     {
+        // (the counts as reals: a spacing far too small makes more
+        // particles than a label holds)
         FatalIOErrorInFunction(regionsDict)
-            << "The regions would make about " << label(n) << " particles";
-        if (n > maxParticles)
+            << "The regions would make about " << n << " particles";
+        if (limited && n > maxParticles)
         {
-            FatalIOError
-                << ", more than maxParticles " << label(maxParticles);
+            FatalIOError << ", more than maxParticles " << maxParticles;
         }
         else
         {
@@ -210,7 +212,10 @@ void Foam::particleGenerator::checkSize(const dictionary& regionsDict) const
                 << available/1073741824.0 << " GiB of memory available";
         }
         FatalIOError
-            << ". Is a spacing too small?" << exit(FatalIOError);
+            << ". Is a spacing too small? The fluid's l0 is " << fluidSpacing_
+            << " m (constant/mpsProperties), the structure's spacing "
+            << structureSpacing_ << " m; a region's own 'spacing' takes"
+            << " their place" << exit(FatalIOError);
     }
 }
 

@@ -332,7 +332,8 @@ Foam::pressureEquation::pressureEquation
     nSolved_(0),
     initialResidual_(0),
     assemblyTime_(0),
-    solveTime_(0)
+    solveTime_(0),
+    clampReported_(false)
 {
     const dictionary* ppePtr = inputChecks::optionalDict(mpsProperties, "ppe");
     const dictionary ppe(ppePtr ? *ppePtr : dictionary());
@@ -399,6 +400,21 @@ const Foam::labelList& Foam::pressureEquation::system
 
 void Foam::pressureEquation::solve(const scalar dt)
 {
+    if
+    (
+        !clampReported_
+     && source_->relaxationTime() > 0
+     && dt > source_->relaxationTime()
+    )
+    {
+        // (an adjusted step grown past relaxationTime: said once)
+        WarningInFunction
+            << "The time step " << dt << " s exceeds ppe.relaxationTime "
+            << source_->relaxationTime() << " s: the relaxation"
+            << " dt/relaxationTime is clamped to 1 from here on (the whole"
+            << " density error corrected each step)" << endl;
+        clampReported_ = true;
+    }
     const clockValue clock(true);
     Eigen::VectorXd b;
     Eigen::VectorXd sol;

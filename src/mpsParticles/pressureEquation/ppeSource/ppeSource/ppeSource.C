@@ -74,6 +74,22 @@ void Foam::ppeSource::readRelaxation()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::ppeSource::checkDeltaT(const scalar dt) const
+{
+    if (relaxationTime_ > 0 && dt > relaxationTime_)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'relaxationTime' " << relaxationTime_ << " s is shorter"
+            << " than the time step " << dt << " s: the relaxation"
+            << " dt/relaxationTime would be clamped to 1 (the whole density"
+            << " error corrected each step, another scheme). Give"
+            << " relaxationTime above the step (the tutorials' 0.01 s is"
+            << " 50 to 500 steps), or the fixed 'relaxation'"
+            << exit(FatalIOError);
+    }
+}
+
+
 void Foam::ppeSource::info(Ostream& os) const
 {
     os  << type();
