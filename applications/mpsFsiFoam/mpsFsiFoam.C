@@ -64,6 +64,7 @@ Description
 #include <cstring>
 #include <cerrno>
 #include <fstream>
+#include <sstream>
 #include <omp.h>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
