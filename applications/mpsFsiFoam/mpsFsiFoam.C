@@ -98,6 +98,7 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "createFields.H"
     #include "reportParticles.H"
+    #include "createSettings.H"
     #include "readTimeControls.H"
 
     Info<< "Starting time loop" << nl << endl;

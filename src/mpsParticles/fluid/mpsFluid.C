@@ -361,10 +361,8 @@ void Foam::mpsFluid::info(Ostream& os) const
     gradient_->info(os);
     os  << nl << "    shifting ";
     shifting_->info(os);
-    os  << nl << "    ppe source ";
-    ppe_.source().info(os);
-    os  << nl << "    ppe surfaceCondition ";
-    ppe_.surfaceCondition().info(os);
+    os  << nl << "    ppe ";
+    ppe_.info(os);
     os  << nl << "    pressureSolver ";
     ppe_.solver().info(os);
     os  << nl << endl;

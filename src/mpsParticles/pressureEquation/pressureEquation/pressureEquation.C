@@ -342,30 +342,46 @@ Foam::pressureEquation::pressureEquation
     surface_ = ppeSurfaceCondition::New(ppe);
     read(ppe);
 
-    Info<< "Pressure equation: source " << source_->type()
-        << ", surfaceCondition " << surface_->type();
-    source_->writeRelaxation(Info);
-    if (compressibility_ > 0)
-    {
-        Info<< ", compressibility " << compressibility_ << " 1/Pa ("
-            << compressibilityFormTypeNames
-               [
-                   rateForm_
-                 ? compressibilityFormType::rate
-                 : compressibilityFormType::absolute
-               ]
-            << "): sound speed " << soundSpeed() << " m/s" << nl;
-    }
-    else
-    {
-        Info<< ", incompressible (compressibility 0)" << nl;
-    }
+    Info<< "Pressure equation: ";
+    info(Info);
+    Info<< nl;
 
     solver_ = pressureSolver::New(mpsProperties);
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::pressureEquation::info(Ostream& os) const
+{
+    os  << "source " << source_->type()
+        << ", surfaceCondition " << surface_->type();
+    source_->writeRelaxation(os);
+    if (source_->fillVoids())
+    {
+        os  << ", fillVoids";
+    }
+    if (compressibility_ > 0)
+    {
+        os  << ", compressibility " << compressibility_ << " 1/Pa ("
+            << compressibilityFormTypeNames
+               [
+                   rateForm_
+                 ? compressibilityFormType::rate
+                 : compressibilityFormType::absolute
+               ]
+            << "): sound speed " << soundSpeed() << " m/s";
+    }
+    else
+    {
+        os  << ", incompressible (compressibility 0)";
+    }
+    if (!clampNegative_)
+    {
+        os  << ", negative pressures kept";
+    }
+}
+
 
 Foam::scalar Foam::pressureEquation::soundSpeed() const
 {
