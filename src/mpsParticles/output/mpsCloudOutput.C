@@ -61,20 +61,16 @@ void Foam::mpsCloudOutput::moveMissing
 }
 
 
-void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
+Foam::PtrList<Foam::cloudFields> Foam::mpsCloudOutput::fields
+(
+    const mpsCloud& cloud,
+    boolList& any
+) const
 {
-    const Time& runTime = mesh_.time();
-    const fileName timeDir(runTime.path()/runTime.timeName());
-    const word staging(runTime.timeName() + ".tmp");
-    const fileName stagingDir(runTime.path()/staging);
-    if (exists(stagingDir))
-    {
-        rmDir(stagingDir);
-    }
-
+    const cloudDistribution* distribution = cloud.distribution();
     const boolList written
     (
-        cloud.distribution() ? cloud.distribution()->writtenHere(cloud) : boolList()
+        distribution ? distribution->writtenHere(cloud) : boolList()
     );
     // A serial run writes its particles in the order of their cells:
     // v1912's decomposePar writes a processor's positions in cell order
@@ -84,7 +80,7 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
     // particles back in it and continues exactly (the writer finds the
     // cells again for the positions file: at write times only)
     labelList cellOrder;
-    if (!cloud.distribution())
+    if (!distribution)
     {
         cellOrder.setSize(cloud.size());
         forAll(cellOrder, i)
@@ -94,7 +90,7 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
         }
     }
     PtrList<cloudFields> clouds(outputClouds::names().size());
-    boolList any(clouds.size());
+    any.setSize(clouds.size());
     forAll(clouds, i)
     {
         clouds.set
@@ -112,17 +108,68 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
 
     forAll(clouds, i)
     {
+        if (any[i])
+        {
+            for (const auto& source : sources_)
+            {
+                if (source.first == clouds[i].name())
+                {
+                    source.second->addFields(clouds[i].ids(), clouds[i]);
+                }
+            }
+        }
+    }
+    return clouds;
+}
+
+
+void Foam::mpsCloudOutput::completeTime(const mpsCloud& cloud)
+{
+    if (!writeVTK_)
+    {
+        return;
+    }
+    boolList any;
+    PtrList<cloudFields> clouds(fields(cloud, any));
+    DynamicList<word> written;
+    forAll(clouds, i)
+    {
+        if (any[i] && !vtk_.listed(clouds[i].name()))
+        {
+            vtk_.write(clouds[i]);
+            written.append(clouds[i].name());
+        }
+    }
+    if (written.size())
+    {
+        Info<< "The VTK pieces of " << flatOutput(written) << " at time "
+            << mesh_.time().timeName() << " were missing (a run stopped"
+            << " between its clouds and their VTK): written again from the"
+            << " time's clouds" << nl << endl;
+    }
+}
+
+
+void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
+{
+    const Time& runTime = mesh_.time();
+    const fileName timeDir(runTime.path()/runTime.timeName());
+    const word staging(runTime.timeName() + ".tmp");
+    const fileName stagingDir(runTime.path()/staging);
+    if (exists(stagingDir))
+    {
+        rmDir(stagingDir);
+    }
+
+    boolList any;
+    PtrList<cloudFields> clouds(fields(cloud, any));
+
+    forAll(clouds, i)
+    {
         cloudFields& c = clouds[i];
         if (!any[i])
         {
             continue;
-        }
-        for (const auto& source : sources_)
-        {
-            if (source.first == c.name())
-            {
-                source.second->addFields(c.ids(), c);
-            }
         }
         lagrangian_.write(c, runTime.timeName(), staging);
     }

@@ -237,4 +237,28 @@ void Foam::vtkCloudWriter::write(const cloudFields& cloud)
 }
 
 
+bool Foam::vtkCloudWriter::listed(const word& cloudName)
+{
+    bool found = false;
+    if (Pstream::master())
+    {
+        if (!series_.found(cloudName))
+        {
+            readSeries(cloudName);
+        }
+        const scalar tol = 1e-9*max(runTime_.deltaTValue(), VSMALL);
+        for (const Tuple2<scalar, word>& e : series_[cloudName])
+        {
+            found = found
+                || (
+                       mag(e.first() - runTime_.value()) < tol
+                    && isFile(dir_/e.second())
+                   );
+        }
+    }
+    Pstream::scatter(found);
+    return found;
+}
+
+
 // ************************************************************************* //

@@ -30,7 +30,7 @@ namespace functionObjects
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::fluidSummary::writeFileHeader(Ostream& os)
+void Foam::functionObjects::fluidSummary::writeFileHeader(OFstream& os)
 {
     writeHeader(os, "MPS fluid summary");
     writeCommented(os, "Time");
@@ -59,14 +59,11 @@ Foam::functionObjects::fluidSummary::fluidSummary
     const dictionary& dict
 )
 :
-    fvMeshFunctionObject(name, runTime, dict),
-    writeFile(mesh_, name, typeName, dict)
+    timeSeriesFile(name, runTime, dict, typeName)
 {
+    // (the file is opened at the first write: a run stopped before, by
+    // another function object's bad entry, leaves no empty file behind)
     read(dict);
-    if (Pstream::master())
-    {
-        writeFileHeader(file());
-    }
 }
 
 
@@ -74,25 +71,12 @@ Foam::functionObjects::fluidSummary::fluidSummary
 
 bool Foam::functionObjects::fluidSummary::read(const dictionary& dict)
 {
-    fvMeshFunctionObject::read(dict);
-    inputChecks::keywords
-    (
-        dict,
-        inputChecks::functionObjectKeywords({}),
-        "function object " + name()
-    );
-    writeFile::read(dict);
+    readEntries(dict, {});
     return true;
 }
 
 
-bool Foam::functionObjects::fluidSummary::execute()
-{
-    return true;
-}
-
-
-bool Foam::functionObjects::fluidSummary::write()
+void Foam::functionObjects::fluidSummary::update()
 {
     const mpsState& state = mpsState::lookup(mesh_);
     const mpsCloud& cloud = state.cloud();
@@ -145,26 +129,39 @@ bool Foam::functionObjects::fluidSummary::write()
     reduce(xMax, maxOp<vector2D>());
 
     const label nFluid = count[label(particleKind::fluid)];
-    if (Pstream::master())
+    row_ =
     {
-        OFstream& os = file();
-        writeCurrentTime(os);
-        os  << tab << nFluid
-            << tab << count[label(particleKind::wall)]
-            << tab << count[label(particleKind::dummy)]
-            << tab << nSurface
-            << tab << nFluid*sqr(l0)
-            << tab << (nInterior ? nError/nInterior : 0)
-            << tab << info.ppeIterations
-            << tab << info.ppeResidual
-            << tab << info.nCollisions
-            << tab << 0.5*fluid.rho()*sqr(l0)*sumU2
-            << tab << ::sqrt(maxU2)
-            << tab << xMax.x()
-            << tab << xMax.y()
-            << endl;
+        scalar(nFluid),
+        scalar(count[label(particleKind::wall)]),
+        scalar(count[label(particleKind::dummy)]),
+        scalar(nSurface),
+        nFluid*sqr(l0),
+        (nInterior ? nError/nInterior : 0),
+        scalar(info.ppeIterations),
+        info.ppeResidual,
+        scalar(info.nCollisions),
+        0.5*fluid.rho()*sqr(l0)*sumU2,
+        ::sqrt(maxU2),
+        xMax.x(),
+        xMax.y()
+    };
+}
+
+
+void Foam::functionObjects::fluidSummary::writeValues(OFstream& os)
+{
+    // The counts as integers (particles, iterations, pairs)
+    forAll(row_, i)
+    {
+        if (i <= 3 || i == 6 || i == 8)
+        {
+            os  << tab << label(row_[i]);
+        }
+        else
+        {
+            os  << tab << row_[i];
+        }
     }
-    return true;
 }
 
 

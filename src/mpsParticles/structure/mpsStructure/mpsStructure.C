@@ -566,7 +566,31 @@ void Foam::mpsStructure::readRestart(const lagrangianCloudReader& reader)
         m.theta()[k] = theta[w];
         m.omega()[k] = omega[w];
     }
-    m.setTime(idIO.time().value());
+    // A structure held until releaseTime is written at rest in its
+    // reference state: one written moving was released already, and
+    // holding it again would stop it dead
+    const scalar t = idIO.time().value();
+    if (t < releaseTime_ - 1e-9*max(mag(releaseTime_), scalar(1)))
+    {
+        scalar speed = 0, displacement = 0;
+        forAll(D, w)
+        {
+            speed = max(speed, mag(U[w]) + mag(omega[w]));
+            displacement = max(displacement, mag(D[w]) + mag(theta[w]));
+        }
+        if (speed > 0 || displacement > 0)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'releaseTime' " << releaseTime_ << " s is after"
+                << " the restart time " << timeName << " s, where the"
+                << " structure written moves (largest speed " << speed
+                << " m/s): it was released already, and holding it until "
+                << releaseTime_ << " s would stop it dead. Give releaseTime"
+                << " " << timeName << " or earlier, or restart from a time"
+                << " before the release" << exit(FatalIOError);
+        }
+    }
+    m.setTime(t);
     m.restored();
     if (motion_.valid())
     {
