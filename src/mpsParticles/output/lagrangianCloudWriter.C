@@ -18,6 +18,7 @@ License
 #include "OFstream.H"
 #include "Time.H"
 #include "Pstream.H"
+#include "writeChecks.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -33,12 +34,16 @@ static fileName staged(const IOobject& io, const fileName& folder)
 
 
 // Write an object into the folder (regIOobject::write would put it in the
-// current time's folder whatever its instance says)
-static void writeInto(const regIOobject& obj, const fileName& folder)
+// current time's folder whatever its instance says); the file's name if
+// it could not be written, empty if it was
+static fileName writeInto(const regIOobject& obj, const fileName& folder)
 {
     const Time& runTime = obj.time();
     const fileName file(staged(obj, folder));
-    mkDir(file.path());
+    if (!isDir(file.path()) && !mkDir(file.path()))
+    {
+        return file.path();
+    }
     OFstream os
     (
         file,
@@ -49,16 +54,12 @@ static void writeInto(const regIOobject& obj, const fileName& folder)
     obj.writeHeader(os);
     obj.writeData(os);
     IOobject::writeEndDivider(os);
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Cannot write " << os.name() << exit(FatalError);
-    }
+    return writeChecks::flushed(os) ? fileName() : file;
 }
 
 
 template<class Type>
-static void writeFields
+static fileName writeFields
 (
     const objectRegistry& db,
     const fileName& instance,
@@ -83,8 +84,13 @@ static void writeFields
             ),
             iter.val()
         );
-        writeInto(fld, folder);
+        const fileName failed(writeInto(fld, folder));
+        if (!failed.empty())
+        {
+            return failed;
+        }
     }
+    return fileName();
 }
 
 } // End namespace Foam
@@ -100,7 +106,7 @@ Foam::lagrangianCloudWriter::lagrangianCloudWriter(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::lagrangianCloudWriter::write
+Foam::fileName Foam::lagrangianCloudWriter::write
 (
     const cloudFields& cloud,
     const fileName& instance,
@@ -122,7 +128,10 @@ void Foam::lagrangianCloudWriter::write
             false
         );
         const fileName file(staged(io, folder));
-        mkDir(file.path());
+        if (!isDir(file.path()) && !mkDir(file.path()))
+        {
+            return file.path();
+        }
         OFstream os(file);
         io.writeHeader(os, "Cloud<passiveParticle>");
 
@@ -134,11 +143,28 @@ void Foam::lagrangianCloudWriter::write
         }
         os  << token::END_LIST << nl;
         IOobject::writeEndDivider(os);
+        if (!writeChecks::flushed(os))
+        {
+            return file;
+        }
     }
 
-    writeFields(mesh_, instance, folder, local, cloud.vectorFields());
-    writeFields(mesh_, instance, folder, local, cloud.scalarFields());
-    writeFields(mesh_, instance, folder, local, cloud.labelFields());
+    fileName failed
+    (
+        writeFields(mesh_, instance, folder, local, cloud.vectorFields())
+    );
+    if (failed.empty())
+    {
+        failed = writeFields(mesh_, instance, folder, local, cloud.scalarFields());
+    }
+    if (failed.empty())
+    {
+        failed = writeFields(mesh_, instance, folder, local, cloud.labelFields());
+    }
+    if (!failed.empty())
+    {
+        return failed;
+    }
 
     // uniform/lagrangian/<cloud>/cloudProperties
     IOdictionary props
@@ -163,7 +189,7 @@ void Foam::lagrangianCloudWriter::write
         word("processor" + Foam::name(Pstream::myProcNo())),
         procDict
     );
-    writeInto(props, folder);
+    return writeInto(props, folder);
 }
 
 

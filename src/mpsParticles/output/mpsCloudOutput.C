@@ -16,6 +16,7 @@ License
 #include "Time.H"
 #include "OSspecific.H"
 #include "allRanks.H"
+#include "writeChecks.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -24,7 +25,8 @@ Foam::mpsCloudOutput::mpsCloudOutput(const polyMesh& mesh)
     mesh_(mesh),
     lagrangian_(mesh),
     vtk_(mesh.time()),
-    writeVTK_(mesh.time().controlDict().getOrDefault<bool>("writeVTK", true))
+    writeVTK_(mesh.time().controlDict().getOrDefault<bool>("writeVTK", true)),
+    lastComplete_()
 {}
 
 
@@ -123,8 +125,28 @@ Foam::PtrList<Foam::cloudFields> Foam::mpsCloudOutput::fields
 }
 
 
+void Foam::mpsCloudOutput::checkVTK(const fileName& failed) const
+{
+    bool written = failed.empty();
+    reduce(written, andOp<bool>());
+    if (!written)
+    {
+        const Time& runTime = mesh_.time();
+        writeChecks::stop
+        (
+            failed.empty() ? string("the master's VTK files") : string(failed),
+            runTime,
+            "Time " + runTime.timeName() + " is complete in its clouds, not"
+            " in its VTK: make space and continue with startFrom latestTime"
+            " (which writes the VTK of the time from its clouds)"
+        );
+    }
+}
+
+
 void Foam::mpsCloudOutput::completeTime(const mpsCloud& cloud)
 {
+    lastComplete_ = mesh_.time().timeName();
     if (!writeVTK_)
     {
         return;
@@ -136,7 +158,7 @@ void Foam::mpsCloudOutput::completeTime(const mpsCloud& cloud)
     {
         if (any[i] && !vtk_.listed(clouds[i].name()))
         {
-            vtk_.write(clouds[i]);
+            checkVTK(vtk_.write(clouds[i]));
             written.append(clouds[i].name());
         }
     }
@@ -164,14 +186,46 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
     boolList any;
     PtrList<cloudFields> clouds(fields(cloud, any));
 
+    // A file not written whole (a full disk) stops the run before the
+    // time is renamed into place: the time goes, the ones before stay
+    fileName failed;
     forAll(clouds, i)
     {
-        cloudFields& c = clouds[i];
-        if (!any[i])
+        if (any[i] && failed.empty())
         {
-            continue;
+            failed = writeChecks::writes
+            (
+                [&]()
+                {
+                    return
+                        lagrangian_.write
+                        (
+                            clouds[i], runTime.timeName(), staging
+                        );
+                }
+            );
         }
-        lagrangian_.write(c, runTime.timeName(), staging);
+    }
+    bool written = failed.empty();
+    reduce(written, andOp<bool>());
+    if (!written)
+    {
+        for (const fileName& dir : {stagingDir, timeDir})
+        {
+            if (exists(dir))
+            {
+                rmDir(dir);
+            }
+        }
+        writeChecks::stop
+        (
+            failed.empty() ? string("another processor's clouds") : string(failed),
+            runTime,
+            "Time " + runTime.timeName() + " was removed; the latest"
+            " complete time is "
+          + (lastComplete_.empty() ? word("none") : lastComplete_)
+          + ": make space and continue with startFrom latestTime"
+        );
     }
 
     // OpenFOAM's own files of the time (uniform/time, written just before)
@@ -187,12 +241,13 @@ void Foam::mpsCloudOutput::write(const mpsCloud& cloud)
         rmDir(timeDir);
     }
     Foam::mv(stagingDir, timeDir);
+    lastComplete_ = runTime.timeName();
 
     forAll(clouds, i)
     {
         if (any[i] && writeVTK_)
         {
-            vtk_.write(clouds[i]);
+            checkVTK(vtk_.write(clouds[i]));
         }
     }
 }

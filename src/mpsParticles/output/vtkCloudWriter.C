@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "vtkCloudWriter.H"
+#include "writeChecks.H"
 #include "foamVtkOutput.H"
 #include "foamVtkOutputOptions.H"
 #include "IFstream.H"
@@ -90,7 +91,10 @@ void Foam::vtkCloudWriter::readSeries(const word& cloudName)
 }
 
 
-void Foam::vtkCloudWriter::writeSeries(const word& cloudName) const
+Foam::fileName Foam::vtkCloudWriter::writeSeries
+(
+    const word& cloudName
+) const
 {
     // Written under a temporary name and renamed when complete
     const fileName pvd(dir_/cloudName + ".pvd");
@@ -114,8 +118,14 @@ void Foam::vtkCloudWriter::writeSeries(const word& cloudName) const
         }
         os  << "  </Collection>\n"
             << "</VTKFile>\n";
+        if (!writeChecks::flushed(os))
+        {
+            Foam::rm(pvd + ".tmp");
+            return pvd;
+        }
     }
     Foam::mv(pvd + ".tmp", pvd);
+    return fileName();
 }
 
 
@@ -131,7 +141,7 @@ Foam::vtkCloudWriter::vtkCloudWriter(const Time& runTime)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::vtkCloudWriter::write(const cloudFields& cloud)
+Foam::fileName Foam::vtkCloudWriter::write(const cloudFields& cloud)
 {
     const word& name = cloud.name();
     if (!series_.found(name) && Pstream::master())
@@ -151,6 +161,7 @@ void Foam::vtkCloudWriter::write(const cloudFields& cloud)
     };
     const word file(pieceName(Pstream::myProcNo()));
     const label n = cloud.size();
+    bool written = false;
 
     {
         std::ofstream os(dir_/file + ".tmp");
@@ -204,18 +215,31 @@ void Foam::vtkCloudWriter::write(const cloudFields& cloud)
 
         format().endPiece();
         format().endTag(vtk::fileTag::POLY_DATA).endVTKFile();
+        written = writeChecks::flushed(os);
     }
-    Foam::mv(dir_/file + ".tmp", dir_/file);
+    if (written)
+    {
+        Foam::mv(dir_/file + ".tmp", dir_/file);
+    }
+    else
+    {
+        Foam::rm(dir_/file + ".tmp");
+    }
 
     // The series: the master's, once every piece is in place
-    if (Pstream::parRun())
+    bool all = written;
+    reduce(all, andOp<bool>());
+    if (!written)
     {
-        bool done = true;
-        reduce(done, andOp<bool>());
+        return dir_/file;
+    }
+    if (!all)
+    {
+        return dir_/stem + "_processor*.vtp";
     }
     if (!Pstream::master())
     {
-        return;
+        return fileName();
     }
 
     // The run writes from this time on: entries of an earlier run at this
@@ -233,7 +257,7 @@ void Foam::vtkCloudWriter::write(const cloudFields& cloud)
             Tuple2<scalar, word>(runTime_.value(), pieceName(proci))
         );
     }
-    writeSeries(name);
+    return writeSeries(name);
 }
 
 

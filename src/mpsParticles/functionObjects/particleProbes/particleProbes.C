@@ -15,6 +15,7 @@ License
 #include "inputChecks.H"
 #include "mpsState.H"
 #include "mpsDecomposition.H"
+#include "writeChecks.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -227,20 +228,35 @@ bool Foam::functionObjects::particleProbes::write()
     {
         forAll(fields_, fi)
         {
-            OFstream& os = files(fi);
-            writeCurrentTime(os);
-            forAll(locations_, i)
+            const fileName failed
+            (
+                writeChecks::writes
+                (
+                    [&]()
+                    {
+                        OFstream& os = files(fi);
+                        writeCurrentTime(os);
+                        forAll(locations_, i)
+                        {
+                            if (fields_[fi] == "U")
+                            {
+                                os  << tab << U[i].x() << tab << U[i].y();
+                            }
+                            else
+                            {
+                                os  << tab << p[i];
+                            }
+                        }
+                        os  << endl;
+                        return
+                            writeChecks::flushed(os) ? fileName() : os.name();
+                    }
+                )
+            );
+            if (!failed.empty())
             {
-                if (fields_[fi] == "U")
-                {
-                    os  << tab << U[i].x() << tab << U[i].y();
-                }
-                else
-                {
-                    os  << tab << p[i];
-                }
+                writeChecks::stopSeries(failed, time_);
             }
-            os  << endl;
         }
     }
     return true;

@@ -14,6 +14,7 @@ License
 #include "timeSeriesFile.H"
 #include "inputChecks.H"
 #include "mpsState.H"
+#include "writeChecks.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -65,19 +66,33 @@ bool Foam::functionObjects::timeSeriesFile::write()
     if (!headerWritten_)
     {
         resetName(fileName_);
-        if (Pstream::master())
-        {
-            writeFileHeader(file());
-        }
-        headerWritten_ = true;
     }
     if (Pstream::master())
     {
-        OFstream& os = file();
-        writeCurrentTime(os);
-        writeValues(os);
-        os  << endl;
+        const fileName failed
+        (
+            writeChecks::writes
+            (
+                [this]()
+                {
+                    OFstream& os = file();
+                    if (!headerWritten_)
+                    {
+                        writeFileHeader(os);
+                    }
+                    writeCurrentTime(os);
+                    writeValues(os);
+                    os  << endl;
+                    return writeChecks::flushed(os) ? fileName() : os.name();
+                }
+            )
+        );
+        if (!failed.empty())
+        {
+            writeChecks::stopSeries(failed, time_);
+        }
     }
+    headerWritten_ = true;
     return true;
 }
 

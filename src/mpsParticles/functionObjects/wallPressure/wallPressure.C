@@ -18,6 +18,7 @@ License
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "allRanks.H"
+#include "writeChecks.H"
 #include "Tuple2.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -214,29 +215,42 @@ void Foam::functionObjects::wallPressure::writeSnapshot() const
     const fileName dir(baseTimeDir());
     mkDir(dir);
     const fileName path(dir/"wallPressure.dat");
-    {
-        OFstream os(path + ".tmp");
-        os.precision(writePrecision_);
-        writeHeader
+    const fileName failed
+    (
+        writeChecks::writes
         (
-            os,
-            "Pressure of the wall particles of region " + regionName_
-        );
-        writeHeaderValue(os, "rho [kg/m3]", state.fluid().rho());
-        writeHeaderValue(os, "Uref [m/s]", Uref_);
-        writeHeaderValue(os, "pRef [Pa]", pRef_);
-        writeHeaderValue(os, "pressure", word(fluidPressure_ ? "fluid" : "solved"));
-        writeCommented(os, "x");
-        writeTabbed(os, "y");
-        writeTabbed(os, "p");
-        writeTabbed(os, "Cp");
-        os  << nl;
-        for (const Tuple2<label, vector>& w : wall)
-        {
-            const vector& v = w.second();
-            os  << v.x() << tab << v.y() << tab << v.z() << tab
-                << (v.z() - pRef_)/q << nl;
-        }
+            [&]()
+            {
+                OFstream os(path + ".tmp");
+                os.precision(writePrecision_);
+                writeHeader
+                (
+                    os,
+                    "Pressure of the wall particles of region " + regionName_
+                );
+                writeHeaderValue(os, "rho [kg/m3]", state.fluid().rho());
+                writeHeaderValue(os, "Uref [m/s]", Uref_);
+                writeHeaderValue(os, "pRef [Pa]", pRef_);
+                writeHeaderValue(os, "pressure", word(fluidPressure_ ? "fluid" : "solved"));
+                writeCommented(os, "x");
+                writeTabbed(os, "y");
+                writeTabbed(os, "p");
+                writeTabbed(os, "Cp");
+                os  << nl;
+                for (const Tuple2<label, vector>& w : wall)
+                {
+                    const vector& v = w.second();
+                    os  << v.x() << tab << v.y() << tab << v.z() << tab
+                        << (v.z() - pRef_)/q << nl;
+                }
+                return writeChecks::flushed(os) ? fileName() : path;
+            }
+        )
+    );
+    if (!failed.empty())
+    {
+        Foam::rm(path + ".tmp");
+        writeChecks::stopSeries(path, time_);
     }
     Foam::mv(path + ".tmp", path);
 }
@@ -450,13 +464,28 @@ bool Foam::functionObjects::wallPressure::write()
         os  << endl;
     }
 
-    OFstream& os = probeFile_();
-    writeCurrentTime(os);
-    forAll(probeNames_, pi)
+    const fileName failed
+    (
+        writeChecks::writes
+        (
+            [this]()
+            {
+                OFstream& os = probeFile_();
+                writeCurrentTime(os);
+                forAll(probeNames_, pi)
+                {
+                    os  << tab
+                        << sums_[pi]/max(label(1), label(samples_[pi].size()));
+                }
+                os  << endl;
+                return writeChecks::flushed(os) ? fileName() : os.name();
+            }
+        )
+    );
+    if (!failed.empty())
     {
-        os  << tab << sums_[pi]/max(label(1), label(samples_[pi].size()));
+        writeChecks::stopSeries(failed, time_);
     }
-    os  << endl;
     return true;
 }
 
