@@ -46,6 +46,29 @@ Foam::particleShiftings::fickian::surfaceTypeNames
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::scalar Foam::particleShiftings::fickian::antiClumping
+(
+    const scalar ratio
+) const
+{
+    if (wholeExponent_ < 0)
+    {
+        return ::pow(ratio, exponent_);
+    }
+    // By squaring: n = 4 is two multiplications
+    scalar result = 1, base = ratio;
+    for (label n = wholeExponent_; n > 0; n >>= 1)
+    {
+        if (n & 1)
+        {
+            result *= base;
+        }
+        base *= base;
+    }
+    return result;
+}
+
+
 Foam::scalar Foam::particleShiftings::fickian::W
 (
     const scalar r,
@@ -139,7 +162,11 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
     ),
     maxShift_(dict.getOrDefault<scalar>("maxShift", 0.1)),
     R_(dict.getOrDefault<scalar>("tensileCorrection", 0.2)),
-    exponent_(dict.getOrDefault<scalar>("tensileExponent", 4))
+    exponent_(dict.getOrDefault<scalar>("tensileExponent", 4)),
+    wholeExponent_
+    (
+        exponent_ == std::round(exponent_) ? label(exponent_) : label(-1)
+    )
 {
     // The fixed form diffuses explicitly: with this kernel it is stable at
     // A = 0.1 and unstable at 0.25 (the hydrostatic tank at l0 10 mm, dt
@@ -229,7 +256,7 @@ Foam::scalar Foam::particleShiftings::fickian::shift
             }
             const vector2D gW((-V*dWdr(r, re)/r)*d);    // V grad_i W_ij
             g += gW;
-            gradC += (1 + R_*::pow(W(r, re)/Wl0, exponent_))*gW;
+            gradC += (1 + R_*antiClumping(W(r, re)/Wl0))*gW;
             M += gW*d;
             if (kind[j] == particleKind::fluid)
             {
