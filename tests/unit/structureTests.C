@@ -32,40 +32,9 @@ namespace
 const std::string aluminium =
     "rho 2700; E 68e9; nu 0.3; planeStrain yes;";
 
-const std::string grayPlate =
-    "rho 1000; E 2e6; nu 0.3975; planeStrain yes;";
-
-//- Give the plate of Gray et al. its first-mode velocity
-void firstMode(structureModel& s, const test::panel& p, const scalar Vf)
-{
-    const scalar L = p.L, E = 2e6, nu = 0.3975, rho = 1000;
-    const scalar k = 1.875/L;
-    auto f = [&](const scalar x)
-    {
-        return (std::cos(k*L) + std::cosh(k*L))*(std::cosh(k*x) - std::cos(k*x))
-             + (std::sin(k*L) - std::sinh(k*L))*(std::sinh(k*x) - std::sin(k*x));
-    };
-    const scalar c0 = std::sqrt(E/(3*(1 - 2*nu))/rho);
-    forAll(p.X, i)
-    {
-        if (!p.clamped[i])
-        {
-            s.v()[i] = vector2D(0, Vf*c0*f(p.X[i].x())/f(L));
-            // the rotation rate of the mode, dv/dx
-            const scalar h = 1e-6*L;
-            s.omega()[i] =
-                Vf*c0*(f(p.X[i].x() + h) - f(p.X[i].x() - h))/(2*h)/f(L);
-        }
-    }
-}
-
-//- Tip deflection (mid-thickness, mean of the middle rows)
-scalar tipDeflection(const structureModel& s, const test::panel& p)
-{
-    const label i = p.nx - 1;
-    const label a = p.index(i, (p.n - 1)/2), b = p.index(i, p.n/2);
-    return 0.5*(s.displacement(a).y() + s.displacement(b).y());
-}
+using test::grayPlate;
+using test::firstMode;
+using test::tipDeflection;
 
 //- Period from upward zero crossings of the tip; largest energy deviation
 scalar period

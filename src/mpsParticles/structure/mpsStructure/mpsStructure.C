@@ -223,7 +223,7 @@ Foam::scalar Foam::mpsStructure::spacing
             "structureModel", "rho", "E", "nu", "planeStrain", "spacing",
             "spacingRatio", "nSubSteps", "deltaT", "damping",
             "stiffnessDamping", "g", "clamped", "clampAt",
-            "clampedVelocity", "bodyMotion",
+            "timeIntegration", "clampedVelocity", "bodyMotion",
             "initialVelocity", "loads", "coupling", "releaseTime"
         },
         "constant/structureProperties"
@@ -240,7 +240,11 @@ Foam::scalar Foam::mpsStructure::spacing
     inputChecks::exclusive(dict, {"spacing", "spacingRatio"});
     inputChecks::exclusive(dict, {"nSubSteps", "deltaT"});
     inputChecks::exclusive(dict, {"clampedVelocity", "bodyMotion"});
-    for (const word& d : {"bodyMotion", "initialVelocity", "loads", "coupling"})
+    for
+    (
+        const word& d
+      : {"bodyMotion", "initialVelocity", "loads", "coupling", "timeIntegration"}
+    )
     {
         inputChecks::optionalDict(dict, d);
     }
@@ -592,6 +596,46 @@ void Foam::mpsStructure::readRestart(const lagrangianCloudReader& reader)
     }
     m.setTime(t);
     m.restored();
+    if (m.implicit())
+    {
+        // The implicit integration's accelerations are part of its state:
+        // read where written (a time written by the explicit integration
+        // has none, and the first step starts from the equilibrium's)
+        bool written = isFile(io("stepAcceleration").objectPath());
+        reduce(written, orOp<bool>());
+        if (written)
+        {
+            auto readIfPresent = [&](const word& name, auto zero)
+            {
+                typedef decltype(zero) Type;
+                IOobject fieldIO(reader.fieldIO("structure", name));
+                fieldIO.readOpt() = IOobject::READ_IF_PRESENT;
+                return allRanks<Type>(IOField<Type>(fieldIO));
+            };
+            const List<vector> A(readIfPresent("stepAcceleration", vector::zero));
+            const scalarList alpha
+            (
+                readIfPresent("stepAngularAcceleration", scalar(0))
+            );
+            if (A.size() != id.size() || alpha.size() != id.size())
+            {
+                FatalIOErrorInFunction(idIO.objectPath())
+                    << "The structure written at time " << timeName
+                    << " has " << A.size() << " stepAcceleration and "
+                    << alpha.size() << " stepAngularAcceleration values for "
+                    << id.size() << " particles" << exit(FatalIOError);
+            }
+            List<vector2D> a(m.size(), Zero);
+            scalarList angular(m.size(), Zero);
+            forAll(id, w)
+            {
+                const label k = modelIndex_[id[w]];
+                a[k] = vector2D(A[w].x(), A[w].y());
+                angular[k] = alpha[w];
+            }
+            m.setStepAccelerations(a, angular);
+        }
+    }
     if (motion_.valid())
     {
         const label k = m.clamped().find(true);
@@ -661,6 +705,22 @@ void Foam::mpsStructure::addFields
     table.add("strainYY", std::move(eyy));
     table.add("strainXY", std::move(exy));
     table.add("axialStrain", std::move(axial));
+    if (m.implicit() && m.hasStepAccelerations())
+    {
+        // The implicit integration's state (a restart continues exactly;
+        // before its first step it has none)
+        vectorField A(n);
+        scalarField alpha(n);
+        forAll(ids, w)
+        {
+            const label k = modelIndex_[cloud_.id()[ids[w]]];
+            const vector2D& a = m.stepAcceleration()[k];
+            A[w] = vector(a.x(), a.y(), 0);
+            alpha[w] = m.stepAngularAcceleration()[k];
+        }
+        table.add("stepAcceleration", std::move(A));
+        table.add("stepAngularAcceleration", std::move(alpha));
+    }
 }
 
 

@@ -106,6 +106,13 @@ Foam::structureModels::rigid::rigid
             << " body has no strain to clamp); use clampAt"
             << " particles" << exit(FatalIOError);
     }
+    if (implicit())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "timeIntegration generalisedAlpha is for the elastic models;"
+            << " rigid integrates its body's motion by its own step (remove"
+            << " timeIntegration)" << exit(FatalIOError);
+    }
 
     forAll(X_, i)
     {

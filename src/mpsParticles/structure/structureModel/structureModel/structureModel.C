@@ -15,6 +15,8 @@ License
 #include "neighbourList.H"
 #include "UIndirectList.H"
 #include "Random.H"
+#include "structureTangent.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -326,7 +328,22 @@ Foam::structureModel::structureModel
     dampingLoss_(0),
     supportPower_(0),
     initialEnergy_(-1),
-    dtMax_(0)
+    dtMax_(0),
+    integration_(integrationType::Verlet),
+    rhoInf_(1),
+    alphaM_(0),
+    alphaF_(0),
+    beta_(0.25),
+    gamma_(0.5),
+    aStep_(X.size(), Zero),
+    alphaStep_(X.size(), Zero),
+    stepAccelerations_(false),
+    tangent_(),
+    factorisedDeltaT_(0),
+    nImplicitSteps_(0),
+    nIterations_(0),
+    nTangents_(0),
+    savedStepAccelerations_(false)
 {
     if (rho_ <= 0)
     {
@@ -382,6 +399,8 @@ Foam::structureModel::structureModel
     clampAtFace_ = (clampAt == "face");
     findGhosts();
 
+    readTimeIntegration();
+
     mu_ = E_/(2*(1 + nu_));
     lambda_ = E_*nu_/((1 + nu_)*(1 - 2*nu_));
     if (!planeStrain_)
@@ -391,7 +410,30 @@ Foam::structureModel::structureModel
 }
 
 
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::structureModel::~structureModel()
+{}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::structureModel::info(Ostream& os) const
+{
+    os  << type();
+    if (implicit())
+    {
+        os  << ", timeIntegration generalisedAlpha (spectralRadius "
+            << rhoInf_ << ")";
+    }
+}
+
+
+Foam::label Foam::structureModel::nForceEvaluations() const
+{
+    return tangent_ ? tangent_->nEvaluations() : 0;
+}
+
 
 Foam::scalar Foam::structureModel::bendingModulus() const
 {
@@ -421,6 +463,18 @@ Foam::scalar Foam::structureModel::maxStableDeltaT() const
 
 void Foam::structureModel::setDeltaT(const scalar dt)
 {
+    if (implicit())
+    {
+        // Unconditionally stable
+        if (!(dt > 0))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Structural time step " << dt << " s must be positive"
+                << exit(FatalIOError);
+        }
+        dt_ = dt;
+        return;
+    }
     const scalar dtMax = maxStableDeltaT();
     if (dt <= 0 || dt > 0.9*dtMax)
     {
@@ -458,6 +512,10 @@ Foam::label Foam::structureModel::setSubSteps(const scalar fluidDeltaT)
     {
         const scalar dt = dict_.get<scalar>("deltaT");
         n = max(label(std::ceil(fluidDeltaT/dt - 1e-6)), label(1));
+    }
+    else if (implicit())
+    {
+        n = 1;
     }
     else
     {
@@ -502,6 +560,9 @@ void Foam::structureModel::transferState(const bool save)
     keep(save, dampingLoss_, saved_.dampingLoss);
     keep(save, supportPower_, saved_.supportPower);
     keep(save, initialEnergy_, saved_.initialEnergy);
+    keep(save, aStep_, savedAStep_);
+    keep(save, alphaStep_, savedAlphaStep_);
+    keep(save, stepAccelerations_, savedStepAccelerations_);
 }
 
 
@@ -536,6 +597,11 @@ void Foam::structureModel::startSubSteps()
 
 void Foam::structureModel::subStep()
 {
+    if (implicit())
+    {
+        implicitStep();
+        return;
+    }
     const scalar dt = dt_;
     const scalar decay = ::exp(-damping_*dt);
     const scalar m = mass();
@@ -650,6 +716,320 @@ void Foam::structureModel::viscousStep(const scalar dt)
         }
     }
     dampingLoss_ += loss;
+}
+
+
+void Foam::structureModel::readTimeIntegration()
+{
+    if (!dict_.found("timeIntegration"))
+    {
+        return;
+    }
+    const dictionary* tiPtr = dict_.findDict("timeIntegration");
+    if (!tiPtr)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'timeIntegration' must be a dictionary:"
+            << " timeIntegration { type generalisedAlpha; spectralRadius"
+            << " 0.8; } or { type Verlet; }" << exit(FatalIOError);
+    }
+    const dictionary& ti = *tiPtr;
+    inputChecks::keywords(ti, {"type", "spectralRadius"}, "timeIntegration");
+    const word type(ti.get<word>("type"));
+    if (type == "Verlet")
+    {
+        if (ti.found("spectralRadius"))
+        {
+            FatalIOErrorInFunction(ti)
+                << "Entry 'spectralRadius' belongs to timeIntegration"
+                << " generalisedAlpha; Verlet has none" << exit(FatalIOError);
+        }
+        return;
+    }
+    if (type != "generalisedAlpha")
+    {
+        FatalIOErrorInFunction(ti)
+            << "timeIntegration type " << type << " is not valid: Verlet"
+            << " (explicit, sub-cycled; the default) or generalisedAlpha"
+            << " (implicit, at the fluid's step)" << exit(FatalIOError);
+    }
+    integration_ = integrationType::generalisedAlpha;
+    rhoInf_ = ti.getOrDefault<scalar>("spectralRadius", 0.8);
+    if (!(rhoInf_ >= 0 && rhoInf_ <= 1))
+    {
+        FatalIOErrorInFunction(ti)
+            << "Entry 'spectralRadius' " << rhoInf_ << " must lie in [0, 1]"
+            << " (1: no numerical damping; 0: the highest modes removed in"
+            << " one step)" << exit(FatalIOError);
+    }
+    if (stiffnessDamping_ > 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'stiffnessDamping' belongs to the explicit Verlet"
+            << " integration (its damping step would be unstable at the"
+            << " implicit step); with timeIntegration generalisedAlpha the"
+            << " spectralRadius takes out the high modes: remove"
+            << " stiffnessDamping" << exit(FatalIOError);
+    }
+    alphaM_ = (2*rhoInf_ - 1)/(rhoInf_ + 1);
+    alphaF_ = rhoInf_/(rhoInf_ + 1);
+    gamma_ = 0.5 - alphaM_ + alphaF_;
+    beta_ = 0.25*sqr(1 - alphaM_ + alphaF_);
+}
+
+
+void Foam::structureModel::forcesAt
+(
+    const UList<vector2D>& x,
+    const UList<scalar>& theta,
+    List<vector2D>& force,
+    scalarList& torque
+)
+{
+    const List<vector2D> x0(x_);
+    const scalarList theta0(theta_);
+    x_ = x;
+    theta_ = theta;
+    clampedInternalForces(force, torque);
+    x_ = x0;
+    theta_ = theta0;
+}
+
+
+void Foam::structureModel::setStepAccelerations
+(
+    const UList<vector2D>& a,
+    const UList<scalar>& alpha
+)
+{
+    aStep_ = a;
+    alphaStep_ = alpha;
+    stepAccelerations_ = true;
+}
+
+
+void Foam::structureModel::implicitStep()
+{
+    const scalar dt = dt_, dt2 = sqr(dt);
+    const label n = size();
+    const scalar m = mass();
+    const scalar I = rotationalInertia();
+
+    const structureTangent::forceFunction forces
+    (
+        [this]
+        (
+            const UList<vector2D>& x,
+            const UList<scalar>& theta,
+            List<vector2D>& F,
+            scalarList& T
+        )
+        {
+            forcesAt(x, theta, F, T);
+        }
+    );
+    const scalar cM = (1 - alphaM_)/(beta_*dt2), cK = 1 - alphaF_;
+    if (!tangent_)
+    {
+        tangent_.reset(new structureTangent(X_, clamped_, ds_));
+        tangent_->build(x_, theta_, forces);
+        ++nTangents_;
+        factorisedDeltaT_ = 0;
+    }
+    if (dt != factorisedDeltaT_)
+    {
+        tangent_->factorise(cM, cK, m, I);
+        factorisedDeltaT_ = dt;
+    }
+    if (!stepAccelerations_)
+    {
+        // The first step starts from the equilibrium's accelerations
+        aStep_ = a_;
+        alphaStep_ = alpha_;
+        stepAccelerations_ = true;
+    }
+
+    const List<vector2D> xn(x_), vn(v_);
+    const scalarList thetan(theta_), omegan(omega_);
+
+    // Predictor: the accelerations kept over the step (the clamped
+    // particles on their motion)
+    List<vector2D> x(n);
+    scalarList theta(n);
+    forAll(x, i)
+    {
+        if (clamped_[i])
+        {
+            x[i] = xn[i] + dt*clampedVelocity_;
+            theta[i] = thetan[i];
+        }
+        else
+        {
+            x[i] = xn[i] + dt*vn[i] + 0.5*dt2*aStep_[i];
+            theta[i] = thetan[i] + dt*omegan[i] + 0.5*dt2*alphaStep_[i];
+        }
+    }
+    // Newmark: the accelerations at the step's end from its positions
+    auto acceleration = [&](const label i)
+    {
+        return
+            (x[i] - xn[i] - dt*vn[i] - (0.5 - beta_)*dt2*aStep_[i])
+           /(beta_*dt2);
+    };
+    auto angularAcceleration = [&](const label i)
+    {
+        return
+            (
+                theta[i] - thetan[i] - dt*omegan[i]
+              - (0.5 - beta_)*dt2*alphaStep_[i]
+            )/(beta_*dt2);
+    };
+
+    // Newton's iterations on the balance at n + 1 - alpha_f, with the
+    // tangent kept while the corrections shrink fast
+    const scalar tolerance = 1e-10;
+    const label maxIterations = 50;
+    List<vector2D> F(n), rF(n), du;
+    scalarList T(n), rT(n), dtheta;
+    scalar lastCorrection = GREAT;
+    for (label iter = 1; ; ++iter)
+    {
+        forAll(x_, i)
+        {
+            x_[i] = (1 - alphaF_)*x[i] + alphaF_*xn[i];
+            theta_[i] = (1 - alphaF_)*theta[i] + alphaF_*thetan[i];
+        }
+        clampedInternalForces(F, T);
+        forAll(rF, i)
+        {
+            if (clamped_[i])
+            {
+                rF[i] = Zero;
+                rT[i] = 0;
+            }
+            else
+            {
+                rF[i] =
+                    F[i] + f_[i] + m*g_
+                  - m*((1 - alphaM_)*acceleration(i) + alphaM_*aStep_[i]);
+                rT[i] =
+                    T[i]
+                  - I
+                   *(
+                        (1 - alphaM_)*angularAcceleration(i)
+                      + alphaM_*alphaStep_[i]
+                    );
+            }
+        }
+        tangent_->solve(rF, rT, du, dtheta);
+        scalar correction = 0;
+        forAll(x, i)
+        {
+            x[i] += du[i];
+            theta[i] += dtheta[i];
+            correction = max(correction, max(mag(du[i])/ds_, mag(dtheta[i])));
+        }
+        ++nIterations_;
+        if (debug)
+        {
+            Info<< "structureModel: step " << nImplicitSteps_ << " iteration "
+                << iter << " correction " << correction << endl;
+        }
+        if (correction < tolerance)
+        {
+            break;
+        }
+        if (iter == maxIterations || !std::isfinite(correction))
+        {
+            FatalErrorInFunction
+                << "The structure's implicit step at time " << time_ + dt
+                << " s did not converge in " << iter << " Newton iterations"
+                << " (last correction " << correction << " spacings, "
+                << nTangents_ << " tangents): a step too long for the"
+                << " structure's motion (deltaT or nSubSteps in"
+                << " constant/structureProperties)" << exit(FatalError);
+        }
+        if (correction > lastCorrection)
+        {
+            // Diverging: the iterate is no configuration to take a tangent
+            // at; the step starts again from its predictor with the
+            // tangent of its start
+            tangent_->build(xn, thetan, forces);
+            tangent_->factorise(cM, cK, m, I);
+            ++nTangents_;
+            forAll(x, i)
+            {
+                if (!clamped_[i])
+                {
+                    x[i] = xn[i] + dt*vn[i] + 0.5*dt2*aStep_[i];
+                    theta[i] =
+                        thetan[i] + dt*omegan[i] + 0.5*dt2*alphaStep_[i];
+                }
+            }
+            correction = GREAT;
+        }
+        else if (correction > 0.5*lastCorrection)
+        {
+            // Slow: the tangent of the configuration reached
+            const List<vector2D> xMid(x_);
+            const scalarList thetaMid(theta_);
+            tangent_->build(xMid, thetaMid, forces);
+            tangent_->factorise(cM, cK, m, I);
+            ++nTangents_;
+        }
+        lastCorrection = correction;
+    }
+
+    // The step's end: velocities and accelerations (Newmark), the work of
+    // the loads held over it
+    scalar work = 0;
+    forAll(x, i)
+    {
+        if (clamped_[i])
+        {
+            v_[i] = clampedVelocity_;
+        }
+        else
+        {
+            const vector2D a1(acceleration(i));
+            const scalar alpha1 = angularAcceleration(i);
+            v_[i] = vn[i] + dt*((1 - gamma_)*aStep_[i] + gamma_*a1);
+            omega_[i] =
+                omegan[i] + dt*((1 - gamma_)*alphaStep_[i] + gamma_*alpha1);
+            aStep_[i] = a1;
+            alphaStep_[i] = alpha1;
+        }
+        work += (f_[i] + m*g_) & (x[i] - xn[i]);
+    }
+    x_ = x;
+    theta_ = theta;
+    time_ += dt;
+    externalWork_ += work;
+    ++nImplicitSteps_;
+
+    // The forces of the step's end: the strains the output reads, the
+    // support's power
+    const scalar powerBefore = supportPower_;
+    updateAcceleration();
+    supportWork_ += 0.5*dt*(powerBefore + supportPower_);
+
+    if (damping_ > 0)
+    {
+        const scalar decay = ::exp(-damping_*dt);
+        scalar loss = 0;
+        forAll(v_, i)
+        {
+            if (!clamped_[i])
+            {
+                loss +=
+                    (0.5*m*magSqr(v_[i]) + 0.5*I*sqr(omega_[i]))
+                   *(1 - sqr(decay));
+                v_[i] *= decay;
+                omega_[i] *= decay;
+            }
+        }
+        dampingLoss_ += loss;
+    }
 }
 
 
