@@ -467,6 +467,12 @@ void Foam::mpsStructure::endStep(const scalar t)
     const clockValue clock(true);
     checkFinite(t);
     toCloud();
+    if (db().time().writeTime())
+    {
+        // The step after a written time builds its tangent at that state,
+        // as a restart from it does: the two continue alike to round-off
+        model_->resetTangent();
+    }
     wallTime_ += clock.elapsed();
 }
 
@@ -617,23 +623,30 @@ void Foam::mpsStructure::readRestart(const lagrangianCloudReader& reader)
             (
                 readIfPresent("stepAngularAcceleration", scalar(0))
             );
-            if (A.size() != id.size() || alpha.size() != id.size())
+            const List<vector> L(readIfPresent("stepLoad", vector::zero));
+            if
+            (
+                A.size() != id.size() || alpha.size() != id.size()
+             || L.size() != id.size()
+            )
             {
                 FatalIOErrorInFunction(idIO.objectPath())
                     << "The structure written at time " << timeName
-                    << " has " << A.size() << " stepAcceleration and "
-                    << alpha.size() << " stepAngularAcceleration values for "
-                    << id.size() << " particles" << exit(FatalIOError);
+                    << " has " << A.size() << " stepAcceleration, "
+                    << alpha.size() << " stepAngularAcceleration and "
+                    << L.size() << " stepLoad values for " << id.size()
+                    << " particles" << exit(FatalIOError);
             }
-            List<vector2D> a(m.size(), Zero);
+            List<vector2D> a(m.size(), Zero), load(m.size(), Zero);
             scalarList angular(m.size(), Zero);
             forAll(id, w)
             {
                 const label k = modelIndex_[id[w]];
                 a[k] = vector2D(A[w].x(), A[w].y());
                 angular[k] = alpha[w];
+                load[k] = vector2D(L[w].x(), L[w].y());
             }
-            m.setStepAccelerations(a, angular);
+            m.setStepAccelerations(a, angular, load);
         }
     }
     if (motion_.valid())
@@ -709,17 +722,20 @@ void Foam::mpsStructure::addFields
     {
         // The implicit integration's state (a restart continues exactly;
         // before its first step it has none)
-        vectorField A(n);
+        vectorField A(n), L(n);
         scalarField alpha(n);
         forAll(ids, w)
         {
             const label k = modelIndex_[cloud_.id()[ids[w]]];
             const vector2D& a = m.stepAcceleration()[k];
+            const vector2D& f = m.stepLoad()[k];
             A[w] = vector(a.x(), a.y(), 0);
             alpha[w] = m.stepAngularAcceleration()[k];
+            L[w] = vector(f.x(), f.y(), 0);
         }
         table.add("stepAcceleration", std::move(A));
         table.add("stepAngularAcceleration", std::move(alpha));
+        table.add("stepLoad", std::move(L));
     }
 }
 

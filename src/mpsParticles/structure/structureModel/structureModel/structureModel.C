@@ -338,11 +338,14 @@ Foam::structureModel::structureModel
     aStep_(X.size(), Zero),
     alphaStep_(X.size(), Zero),
     stepAccelerations_(false),
+    fStep_(X.size(), Zero),
     tangent_(),
     factorisedDeltaT_(0),
     nImplicitSteps_(0),
     nIterations_(0),
     nTangents_(0),
+    nCutbacks_(0),
+    nEvaluationsBefore_(0),
     savedStepAccelerations_(false)
 {
     if (rho_ <= 0)
@@ -431,7 +434,7 @@ void Foam::structureModel::info(Ostream& os) const
 
 Foam::label Foam::structureModel::nForceEvaluations() const
 {
-    return tangent_ ? tangent_->nEvaluations() : 0;
+    return nEvaluationsBefore_ + (tangent_ ? tangent_->nEvaluations() : 0);
 }
 
 
@@ -563,6 +566,7 @@ void Foam::structureModel::transferState(const bool save)
     keep(save, aStep_, savedAStep_);
     keep(save, alphaStep_, savedAlphaStep_);
     keep(save, stepAccelerations_, savedStepAccelerations_);
+    keep(save, fStep_, savedFStep_);
 }
 
 
@@ -799,18 +803,51 @@ void Foam::structureModel::forcesAt
 void Foam::structureModel::setStepAccelerations
 (
     const UList<vector2D>& a,
-    const UList<scalar>& alpha
+    const UList<scalar>& alpha,
+    const UList<vector2D>& load
 )
 {
     aStep_ = a;
     alphaStep_ = alpha;
+    fStep_ = load;
     stepAccelerations_ = true;
+}
+
+
+void Foam::structureModel::resetTangent()
+{
+    if (tangent_)
+    {
+        nEvaluationsBefore_ += tangent_->nEvaluations();
+    }
+    tangent_.reset();
 }
 
 
 void Foam::structureModel::implicitStep()
 {
-    const scalar dt = dt_, dt2 = sqr(dt);
+    implicitSteps(dt_, 0);
+}
+
+
+void Foam::structureModel::implicitSteps(const scalar dt, const label cuts)
+{
+    // A step whose Newton iterations do not converge is taken again as two
+    // halves, down to 2^-maxCuts of the step (the load held over both)
+    const label maxCuts = 4;
+    if (newtonStep(dt, cuts == maxCuts))
+    {
+        return;
+    }
+    ++nCutbacks_;
+    implicitSteps(0.5*dt, cuts + 1);
+    implicitSteps(0.5*dt, cuts + 1);
+}
+
+
+bool Foam::structureModel::newtonStep(const scalar dt, const bool last)
+{
+    const scalar dt2 = sqr(dt);
     const label n = size();
     const scalar m = mass();
     const scalar I = rotationalInertia();
@@ -843,10 +880,22 @@ void Foam::structureModel::implicitStep()
     }
     if (!stepAccelerations_)
     {
-        // The first step starts from the equilibrium's accelerations
+        // The first step starts from the equilibrium's accelerations, its
+        // load held
         aStep_ = a_;
         alphaStep_ = alpha_;
+        fStep_ = f_;
         stepAccelerations_ = true;
+    }
+
+    // The load at n + 1 - alpha_f: the held loads are the values at the
+    // steps' middles, extrapolated linearly (with alpha_f = 1/2, the held
+    // load itself; otherwise each step's impulse would lag the load by
+    // (1/2 - alpha_f) dt, which a body in motion turns into work)
+    List<vector2D> fA(n);
+    forAll(fA, i)
+    {
+        fA[i] = f_[i] + (0.5 - alphaF_)*(f_[i] - fStep_[i]);
     }
 
     const List<vector2D> xn(x_), vn(v_);
@@ -910,7 +959,7 @@ void Foam::structureModel::implicitStep()
             else
             {
                 rF[i] =
-                    F[i] + f_[i] + m*g_
+                    F[i] + fA[i] + m*g_
                   - m*((1 - alphaM_)*acceleration(i) + alphaM_*aStep_[i]);
                 rT[i] =
                     T[i]
@@ -941,13 +990,21 @@ void Foam::structureModel::implicitStep()
         }
         if (iter == maxIterations || !std::isfinite(correction))
         {
+            if (!last)
+            {
+                // The step's start back, for its halves
+                x_ = xn;
+                theta_ = thetan;
+                return false;
+            }
             FatalErrorInFunction
                 << "The structure's implicit step at time " << time_ + dt
                 << " s did not converge in " << iter << " Newton iterations"
-                << " (last correction " << correction << " spacings, "
-                << nTangents_ << " tangents): a step too long for the"
-                << " structure's motion (deltaT or nSubSteps in"
-                << " constant/structureProperties)" << exit(FatalError);
+                << ", nor in steps of " << dt << " s (last correction "
+                << correction << " spacings, " << nTangents_
+                << " tangents): a step too long for the structure's motion"
+                << " (deltaT or nSubSteps in constant/structureProperties)"
+                << exit(FatalError);
         }
         if (correction > lastCorrection)
         {
@@ -1003,6 +1060,7 @@ void Foam::structureModel::implicitStep()
     }
     x_ = x;
     theta_ = theta;
+    fStep_ = f_;
     time_ += dt;
     externalWork_ += work;
     ++nImplicitSteps_;
@@ -1030,6 +1088,7 @@ void Foam::structureModel::implicitStep()
         }
         dampingLoss_ += loss;
     }
+    return true;
 }
 
 
