@@ -12,6 +12,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "PCG.H"
+#include "hypreSystem.H"
+#include "Pstream.H"
 #include "addToRunTimeSelectionTable.H"
 #include "inputChecks.H"
 #include <Eigen/IterativeLinearSolvers>
@@ -122,6 +124,69 @@ Foam::pressureSolver::performance Foam::pressureSolvers::PCG::solve
         Eigen::IncompleteCholesky<double, Eigen::Lower>
     > cg;
     return solveWith(cg, A, b, p, tolerance_, maxIter_);
+}
+
+
+Foam::pressureSolver::performance Foam::pressureSolvers::PCG::solve
+(
+    const ppeMatrix& A,
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& p,
+    const label rowStart
+)
+{
+    if (!Pstream::parRun() || Pstream::nProcs() == 1)
+    {
+        return solve(A, b, p);
+    }
+    if (preconditioner_ != preconditionerType::diagonal)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "pressureSolver PCG with preconditioner "
+            << preconditionerNames[preconditioner_]
+            << " solves on one rank; under -parallel use preconditioner "
+            << "diagonal, or type BoomerAMG" << exit(FatalIOError);
+    }
+
+    performance perf;
+    label nGlobal = A.rows();
+    reduce(nGlobal, sumOp<label>());
+    if (nGlobal == 0)
+    {
+        return perf;
+    }
+
+    hypreSystem::initialise();
+    hypreSystem sys(A, b, p, rowStart, true);
+    HYPRE_Solver pcg;
+    HYPRE_ParCSRPCGCreate(sys.comm(), &pcg);
+    HYPRE_PCGSetTol(pcg, tolerance_);
+    HYPRE_PCGSetMaxIter(pcg, maxIter_);
+    HYPRE_PCGSetTwoNorm(pcg, 1);
+    HYPRE_PCGSetPrintLevel(pcg, 0);
+    HYPRE_PCGSetPrecond
+    (
+        pcg,
+        reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_ParCSRDiagScale),
+        reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_ParCSRDiagScaleSetup),
+        nullptr
+    );
+    HYPRE_ParCSRPCGSetup(pcg, sys.A(), sys.b(), sys.x());
+    const HYPRE_Int status =
+        HYPRE_ParCSRPCGSolve(pcg, sys.A(), sys.b(), sys.x());
+
+    HYPRE_Int iterations = 0;
+    HYPRE_Real residual = 0;
+    HYPRE_PCGGetNumIterations(pcg, &iterations);
+    HYPRE_PCGGetFinalRelativeResidualNorm(pcg, &residual);
+    sys.solution(p);
+    HYPRE_ClearAllErrors();
+    HYPRE_ParCSRPCGDestroy(pcg);
+
+    perf.iterations = iterations;
+    perf.residual = residual;
+    perf.converged = (status == 0 && residual <= tolerance_);
+    return perf;
 }
 
 
