@@ -1,11 +1,15 @@
 /*---------------------------------------------------------------------------*\
     Neighbour search: the cell-linked list neighbour lists against a brute
     force O(N^2) search on random particles (same sets), for a radius equal
-    to, smaller and larger than the cell size, and for 1 and 2 threads.
+    to, smaller and larger than the cell size, and for 1 and 2 threads; the
+    search with a skin (neighbourSearch) against a full search while the
+    points move: the same lists, candidates rebuilt only when a point has
+    moved far enough or the points change.
 \*---------------------------------------------------------------------------*/
 
 #include <catch2/catch.hpp>
 #include "neighbourList.H"
+#include "neighbourSearch.H"
 #include "Random.H"
 #include <omp.h>
 #include <algorithm>
@@ -126,4 +130,62 @@ TEST_CASE("neighbour lists on a lattice count the stencil")
     const label interior = 15*30 + 15;
     CHECK(list[interior].size() == 12);
     CHECK(list[0].size() == 5);         // a corner: 2 + 1 + 2
+}
+
+
+TEST_CASE("a search with a skin finds the lists a full search finds")
+{
+    // 4000 points in a 1 x 0.5 box moving randomly by up to 0.001 a step
+    // (radius 0.03, skin 0.01: a point of the 4000 reaches half the skin
+    // in some 4 steps);
+    // the last 200 points are not searched (a structure's, in the fluid)
+    List<vector2D> x(randomPoints(4000, vector2D(1, 0.5), 7));
+    const label nActive = 3800;
+    const scalar radius = 0.03, skin = 0.01;
+    neighbourSearch search(radius, skin);
+    Random rnd(11);
+    label revision = 0;
+
+    for (label step = 0; step < 40; ++step)
+    {
+        INFO("step " << step);
+        for (vector2D& p : x)
+        {
+            p += 0.001*vector2D
+            (
+                2*rnd.sample01<scalar>() - 1, 2*rnd.sample01<scalar>() - 1
+            );
+        }
+        if (step == 30)
+        {
+            // The points change (a removal, a redistribution): the same
+            // number, others in their places
+            std::reverse(x.begin(), x.begin() + nActive);
+            ++revision;
+        }
+
+        // Both radii a fluid step asks for
+        for (const scalar r : {radius, 0.7*radius})
+        {
+            neighbourList found, full;
+            search.find(x, nActive, revision, r, found);
+            full.build(x, r, nActive);
+            CHECK(found.offsets() == full.offsets());
+            CHECK(found.neighbours() == full.neighbours());
+        }
+    }
+    // Far fewer builds than searches, and a rebuild at the change
+    WARN(search.nBuilds() << " builds in " << search.nSearches() << " searches");
+    CHECK(search.nSearches() == 80);
+    CHECK(search.nBuilds() >= 6);
+    CHECK(search.nBuilds() <= 16);
+
+    // A skin of 0: a full search every time
+    neighbourSearch none(radius, 0);
+    neighbourList found, full;
+    none.find(x, nActive, revision, radius, found);
+    none.find(x, nActive, revision, radius, found);
+    full.build(x, radius, nActive);
+    CHECK(found.neighbours() == full.neighbours());
+    CHECK(none.nBuilds() == 2);
 }

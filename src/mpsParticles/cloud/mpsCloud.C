@@ -75,6 +75,7 @@ void Foam::mpsCloud::reorder(const labelUList& from)
 
 void Foam::mpsCloud::updateIndex()
 {
+    ++revision_;
     start_ = 0;
     forAll(kind_, i)
     {
@@ -104,6 +105,7 @@ void Foam::mpsCloud::updateIndex()
 Foam::mpsCloud::mpsCloud()
 :
     start_(0),
+    revision_(0),
     distribution_(nullptr)
 {
     addFields();
@@ -125,6 +127,7 @@ Foam::mpsCloud::mpsCloud(const mpsCloud& cloud)
     start_(cloud.start_),
     indexOfId_(cloud.indexOfId_),
     regionNames_(cloud.regionNames_),
+    revision_(cloud.revision_),
     distribution_(nullptr)
 {
     addFields();
@@ -146,6 +149,7 @@ Foam::mpsCloud::mpsCloud(mpsCloud&& cloud)
     start_(cloud.start_),
     indexOfId_(std::move(cloud.indexOfId_)),
     regionNames_(std::move(cloud.regionNames_)),
+    revision_(cloud.revision_),
     distribution_(nullptr)
 {
     addFields();
@@ -282,6 +286,8 @@ void Foam::mpsCloud::append
         id_[i] = id0 + j;
     }
 
+    ++revision_;
+
     // In kind order if no new kind is below the one before it
     bool inOrder = true;
     particleKind last = n0 ? kind_[n0 - 1] : particleKind::fluid;
@@ -417,6 +423,7 @@ void Foam::mpsCloud::clear()
     indexOfId_.clear();
     regionNames_.clear();
     start_ = 0;
+    ++revision_;
 }
 
 

@@ -26,7 +26,8 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
         dict,
         {
             "rho", "nu", "g", "l0", "kernel", "re", "ppe", "freeSurface",
-            "collision", "pressureSolver", "pressureGradient", "shifting"
+            "collision", "pressureSolver", "pressureGradient", "shifting",
+            "neighbourSkin"
         },
         "constant/mpsProperties"
     );
@@ -38,6 +39,20 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
         "re"
     );
     return dict;
+}
+
+
+Foam::scalar Foam::mpsFluid::readSkin(const dictionary& dict)
+{
+    const scalar skin = dict.getOrDefault<scalar>("neighbourSkin", 0.3);
+    if (!(skin >= 0 && skin <= 2))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'neighbourSkin' (the neighbour lists' skin, in l0)"
+            << " must lie in [0, 2] (0: a full search every step), got "
+            << skin << exit(FatalIOError);
+    }
+    return skin;
 }
 
 
@@ -90,7 +105,7 @@ Foam::label Foam::mpsFluid::nActive() const
 void Foam::mpsFluid::updateNeighbours()
 {
     const scalar radius = max(kN_->re(), max(kG_->re(), kL_->re()));
-    nbrs_.build(cloud_.x(), radius, nActive());
+    search_.find(cloud_.x(), nActive(), cloud_.revision(), radius, nbrs_);
 
     const UList<vector2D>& x = cloud_.x();
     const labelList& offsets = nbrs_.offsets();
@@ -273,6 +288,7 @@ Foam::mpsFluid::mpsFluid
     n0V_(kV_->latticeNumberDensity(l0_)),
     lambdaV_(kV_->latticeLambda(l0_)),
     F0_(kN_->latticeSurfaceAsymmetry(l0_)),
+    search_(interactionRadius(), readSkin(dict)*l0_),
     pairsN_{cloud_, nbrs_, wN_, kN_(), n0N_, kN_->latticeLambda(l0_), minR_},
     pairsG_{cloud_, nbrs_, wG_, kG_(), n0G_, kG_->latticeLambda(l0_), minR_},
     pairsL_{cloud_, nbrs_, wL_, kL_(), n0L_, lambdaL_, minR_},
@@ -308,7 +324,7 @@ void Foam::mpsFluid::viscousAcceleration(List<vector2D>& acc)
     const UList<particleKind>& kind = cloud_.kind();
     const label n = cloud_.size();
 
-    nbrsV_.build(x, kV_->re(), nActive());
+    search_.find(x, nActive(), cloud_.revision(), kV_->re(), nbrsV_);
     const labelList& offsets = nbrsV_.offsets();
     const labelList& nbr = nbrsV_.neighbours();
     const scalar coeff = nu_*2*2/(lambdaV_*n0V_);
@@ -352,7 +368,8 @@ void Foam::mpsFluid::info(Ostream& os) const
     os  << "Fluid step:" << nl
         << "    kernel " << kN_->type() << ", radii [l0]: numberDensity "
         << kN_->re()/l0_ << ", gradient " << kG_->re()/l0_ << ", laplacian "
-        << kL_->re()/l0_ << ", viscosity " << kV_->re()/l0_ << nl
+        << kL_->re()/l0_ << ", viscosity " << kV_->re()/l0_
+        << ", neighbour skin " << search_.skin()/l0_ << nl
         << "    freeSurface ";
     freeSurface_->info(os);
     os  << nl << "    collision ";
@@ -501,6 +518,8 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
     reduceRanks(info_.maxShift, maxOp<scalar>());
     info_.timeRest += clock.elapsed();
     info_.timeExchange = exchangeTime_;
+    info_.nSearches = search_.nSearches();
+    info_.nSearchBuilds = search_.nBuilds();
 
     return info_;
 }

@@ -73,22 +73,14 @@ void Foam::neighbourList::build
 }
 
 
-void Foam::neighbourList::build
+template<class AppendNeighbours>
+void Foam::neighbourList::fill
 (
-    const UList<vector2D>& x,
-    const cellLinkedList& cells,
-    const scalar radius
+    const label nPoints,
+    const label nExpected,
+    const AppendNeighbours& appendNeighbours
 )
 {
-    radius_ = radius;
-    const label nPoints = x.size();
-    const scalar r2 = radius*radius;
-
-    // Cells to visit on each side: radius may exceed the cell size
-    const label reach = label(std::ceil(radius/cells.cellSize() - SMALL));
-    const labelList& order = cells.order();
-    const List<vector2D>& sorted = cells.sorted();
-
     offsets_.setSize(nPoints + 1);
     offsets_[0] = 0;
 
@@ -98,13 +90,6 @@ void Foam::neighbourList::build
         buffers_.setSize(nThreads);
     }
     labelList blockStart(nThreads + 1);
-
-    // Expected neighbours per point: the points' mean density times the
-    // area of the search circle
-    const scalar area =
-        max(scalar(cells.nx()*cells.ny()), scalar(1))*sqr(cells.cellSize());
-    const label nExpected =
-        label(1.3*constant::mathematical::pi*r2*nPoints/area) + 8;
 
     #pragma omp parallel num_threads(nThreads)
     {
@@ -122,29 +107,7 @@ void Foam::neighbourList::build
 
         for (label i = first; i < last; ++i)
         {
-            const vector2D& xi = x[i];
-            label ix, iy;
-            cells.cellOf(xi, ix, iy);
-
-            const label jx0 = max(ix - reach, label(0));
-            const label jx1 = min(ix + reach, cells.nx() - 1);
-            const label jy0 = max(iy - reach, label(0));
-            const label jy1 = min(iy + reach, cells.ny() - 1);
-
-            for (label jy = jy0; jy <= jy1; ++jy)
-            {
-                // Cells of one row are contiguous in order()
-                const label kEnd = cells.cellEnd(jx1, jy);
-                for (label k = cells.cellBegin(jx0, jy); k < kEnd; ++k)
-                {
-                    const scalar dx = sorted[k].x() - xi.x();
-                    const scalar dy = sorted[k].y() - xi.y();
-                    if (dx*dx + dy*dy < r2 && order[k] != i)
-                    {
-                        nbrs.append(order[k]);
-                    }
-                }
-            }
+            appendNeighbours(i, nbrs);
             offsets_[i + 1] = nbrs.size();
         }
 
@@ -179,6 +142,106 @@ void Foam::neighbourList::build
             neighbours_.begin() + shift
         );
     }
+}
+
+
+void Foam::neighbourList::build
+(
+    const UList<vector2D>& x,
+    const cellLinkedList& cells,
+    const scalar radius
+)
+{
+    radius_ = radius;
+    const label nPoints = x.size();
+    const scalar r2 = radius*radius;
+
+    // Cells to visit on each side: radius may exceed the cell size
+    const label reach = label(std::ceil(radius/cells.cellSize() - SMALL));
+    const labelList& order = cells.order();
+    const List<vector2D>& sorted = cells.sorted();
+
+    // Expected neighbours per point: the points' mean density times the
+    // area of the search circle
+    const scalar area =
+        max(scalar(cells.nx()*cells.ny()), scalar(1))*sqr(cells.cellSize());
+    const label nExpected =
+        label(1.3*constant::mathematical::pi*r2*nPoints/area) + 8;
+
+    fill
+    (
+        nPoints,
+        nExpected,
+        [&](const label i, DynamicList<label>& nbrs)
+        {
+            const vector2D& xi = x[i];
+            label ix, iy;
+            cells.cellOf(xi, ix, iy);
+
+            const label jx0 = max(ix - reach, label(0));
+            const label jx1 = min(ix + reach, cells.nx() - 1);
+            const label jy0 = max(iy - reach, label(0));
+            const label jy1 = min(iy + reach, cells.ny() - 1);
+
+            const label start = nbrs.size();
+            for (label jy = jy0; jy <= jy1; ++jy)
+            {
+                // Cells of one row are contiguous in order()
+                const label kEnd = cells.cellEnd(jx1, jy);
+                for (label k = cells.cellBegin(jx0, jy); k < kEnd; ++k)
+                {
+                    const scalar dx = sorted[k].x() - xi.x();
+                    const scalar dy = sorted[k].y() - xi.y();
+                    if (dx*dx + dy*dy < r2 && order[k] != i)
+                    {
+                        nbrs.append(order[k]);
+                    }
+                }
+            }
+            // In index order: the list does not depend on the cells (a
+            // list filtered from a larger one is the same list)
+            std::sort(nbrs.begin() + start, nbrs.end());
+        }
+    );
+}
+
+
+void Foam::neighbourList::filter
+(
+    const neighbourList& candidates,
+    const UList<vector2D>& x,
+    const scalar radius
+)
+{
+    radius_ = radius;
+    const scalar r2 = radius*radius;
+    const labelList& offsets = candidates.offsets();
+    const labelList& nbr = candidates.neighbours();
+    const label nPoints = candidates.size();
+    const label nExpected =
+        nPoints
+      ? label(1.1*sqr(radius/candidates.radius())*nbr.size()/nPoints) + 8
+      : 0;
+
+    fill
+    (
+        nPoints,
+        nExpected,
+        [&](const label i, DynamicList<label>& nbrs)
+        {
+            const vector2D& xi = x[i];
+            for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+            {
+                const label j = nbr[k];
+                const scalar dx = x[j].x() - xi.x();
+                const scalar dy = x[j].y() - xi.y();
+                if (dx*dx + dy*dy < r2)
+                {
+                    nbrs.append(j);
+                }
+            }
+        }
+    );
 }
 
 
