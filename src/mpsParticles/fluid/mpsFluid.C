@@ -42,6 +42,12 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
 }
 
 
+bool Foam::mpsFluid::sameKernel(const mpsKernel& a, const mpsKernel& b)
+{
+    return a.type() == b.type() && a.re() == b.re();
+}
+
+
 Foam::scalar Foam::mpsFluid::readSkin(const dictionary& dict)
 {
     const scalar skin = dict.getOrDefault<scalar>("neighbourSkin", 0.3);
@@ -112,27 +118,31 @@ void Foam::mpsFluid::updateNeighbours()
     const labelList& nbr = nbrs_.neighbours();
     const label nPairs = nbrs_.nPairs();
     wN_.setSize(nPairs);
-    wG_.setSize(nPairs);
-    wL_.setSize(nPairs);
-
-    // The three weights are one when the kernels are (the usual case):
-    // computed once
-    auto same = [this](const mpsKernel& k)
+    if (!sameG_)
     {
-        return k.type() == kN_->type() && k.re() == kN_->re();
-    };
-    const bool sameG = same(kG_()), sameL = same(kL_());
+        wG_.setSize(nPairs);
+    }
+    if (!sameL_)
+    {
+        wL_.setSize(nPairs);
+    }
 
-    #pragma omp parallel for schedule(static)
+    // (dynamic: the structure's particles at the end have no pairs)
+    #pragma omp parallel for schedule(dynamic, 512)
     for (label i = 0; i < cloud_.size(); ++i)
     {
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
             const scalar r = max(mag(x[nbr[k]] - x[i]), minR_);
-            const scalar w = kN_->w(r);
-            wN_[k] = w;
-            wG_[k] = sameG ? w : kG_->w(r);
-            wL_[k] = sameL ? w : kL_->w(r);
+            wN_[k] = kN_->w(r);
+            if (!sameG_)
+            {
+                wG_[k] = kG_->w(r);
+            }
+            if (!sameL_)
+            {
+                wL_[k] = kL_->w(r);
+            }
         }
     }
 }
@@ -289,9 +299,15 @@ Foam::mpsFluid::mpsFluid
     lambdaV_(kV_->latticeLambda(l0_)),
     F0_(kN_->latticeSurfaceAsymmetry(l0_)),
     search_(interactionRadius(), readSkin(dict)*l0_),
+    sameG_(sameKernel(kG_(), kN_())),
+    sameL_(sameKernel(kL_(), kN_())),
     pairsN_{cloud_, nbrs_, wN_, kN_(), n0N_, kN_->latticeLambda(l0_), minR_},
-    pairsG_{cloud_, nbrs_, wG_, kG_(), n0G_, kG_->latticeLambda(l0_), minR_},
-    pairsL_{cloud_, nbrs_, wL_, kL_(), n0L_, lambdaL_, minR_},
+    pairsG_
+    {
+        cloud_, nbrs_, sameG_ ? wN_ : wG_, kG_(), n0G_,
+        kG_->latticeLambda(l0_), minR_
+    },
+    pairsL_{cloud_, nbrs_, sameL_ ? wN_ : wL_, kL_(), n0L_, lambdaL_, minR_},
     ppe_(cloud_, dict, pairsN_, pairsL_, rho_),
     freeSurface_(freeSurfaceModel::New(dict, l0_)),
     collision_(collisionModel::New(dict)),
@@ -331,7 +347,7 @@ void Foam::mpsFluid::viscousAcceleration(List<vector2D>& acc)
 
     acc.setSize(n);
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(dynamic, 512)
     for (label i = 0; i < n; ++i)
     {
         vector2D lapU(Zero);

@@ -87,7 +87,7 @@ void Foam::freeSurfaceModel::asymmetryTest
     const labelList& nbr = nbrs.neighbours();
     const scalar limit = sqr(asymmetry*F0*n0/2);
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(dynamic, 512)
     for (label i = 0; i < cloud.size(); ++i)
     {
         if (kinds[i] != kind)

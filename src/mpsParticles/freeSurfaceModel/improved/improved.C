@@ -61,7 +61,7 @@ void Foam::freeSurfaceModels::improved::wallNumberDensityTest
     const scalar limit = wallBeta_*wallN0_;
     const scalar minR = 1e-3*l0_;
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(dynamic, 64)
     for (label i = 0; i < cloud.size(); ++i)
     {
         if (kinds[i] != particleKind::wall)

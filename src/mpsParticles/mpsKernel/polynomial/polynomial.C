@@ -31,7 +31,8 @@ namespace mpsKernels
 
 Foam::mpsKernels::polynomial::polynomial(const dictionary& dict, const scalar re)
 :
-    mpsKernel(dict, re)
+    mpsKernel(dict, re),
+    invRe_(1/re)
 {
     inputChecks::keywords(dict, {"type"}, "kernel polynomial");
 }
@@ -45,7 +46,7 @@ Foam::scalar Foam::mpsKernels::polynomial::w(const scalar r) const
     {
         return 0;
     }
-    const scalar s = 1 - r/re_;
+    const scalar s = 1 - r*invRe_;
     return s*s*s;
 }
 
@@ -57,8 +58,8 @@ Foam::scalar Foam::mpsKernels::polynomial::dwdr(const scalar r) const
     {
         return 0;
     }
-    const scalar s = 1 - r/re_;
-    return -3*s*s/re_;
+    const scalar s = 1 - r*invRe_;
+    return -3*s*s*invRe_;
 }
 
 

@@ -46,7 +46,7 @@ Foam::particleShiftings::fickian::surfaceTypeNames
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::particleShiftings::fickian::antiClumping
+inline Foam::scalar Foam::particleShiftings::fickian::antiClumping
 (
     const scalar ratio
 ) const
@@ -69,36 +69,16 @@ Foam::scalar Foam::particleShiftings::fickian::antiClumping
 }
 
 
-Foam::scalar Foam::particleShiftings::fickian::W
+Foam::particleShiftings::fickian::wendland::wendland
 (
-    const scalar r,
-    const scalar re
+    const scalar re,
+    const scalar V
 )
-{
-    const scalar h = 0.5*re, q = r/h;
-    if (q >= 2)
-    {
-        return 0;
-    }
-    const scalar sigma = 7/(4*constant::mathematical::pi*sqr(h));
-    return sigma*pow4(1 - 0.5*q)*(2*q + 1);
-}
-
-
-Foam::scalar Foam::particleShiftings::fickian::dWdr
-(
-    const scalar r,
-    const scalar re
-)
-{
-    const scalar h = 0.5*re, q = r/h;
-    if (q >= 2)
-    {
-        return 0;
-    }
-    const scalar sigma = 7/(4*constant::mathematical::pi*sqr(h));
-    return -(sigma/h)*5*q*pow3(1 - 0.5*q);
-}
+:
+    invH(2/re),
+    sigma(7*sqr(invH)/(4*constant::mathematical::pi)),
+    gradCoeff(5*V*sigma*sqr(invH))
+{}
 
 
 Foam::scalar Foam::particleShiftings::fickian::smallestEigenvalue
@@ -215,8 +195,12 @@ Foam::scalar Foam::particleShiftings::fickian::shift
     const label n = offsets.size() - 1;
 
     const scalar V = sqr(l0), h = 0.5*re;
-    const scalar Wl0 = W(l0, re);
-    const scalar minR = 1e-3*l0, maxShift = maxShift_*l0;
+    const wendland kernel(re, V);
+    scalar Wl0, unused;
+    kernel.evaluate(l0, Wl0, unused);
+    const scalar invWl0 = 1/Wl0;
+    const scalar re2 = sqr(re), minR2 = sqr(1e-3*l0);
+    const scalar maxShift = maxShift_*l0;
     // A renormalisation matrix is used where it is far from singular (it
     // is the identity on a full neighbourhood, 0.09 in a quarter plane, 0
     // with all neighbours on one line)
@@ -226,7 +210,7 @@ Foam::scalar Foam::particleShiftings::fickian::shift
     List<vector2D> dU(n, Zero);
     scalar largest = 0;
 
-    #pragma omp parallel for schedule(static) reduction(max:largest)
+    #pragma omp parallel for schedule(dynamic, 512) reduction(max:largest)
     for (label i = 0; i < n; ++i)
     {
         if
@@ -243,28 +227,35 @@ Foam::scalar Foam::particleShiftings::fickian::shift
         // are, and M = sum V grad_i W_ij d is symmetric positive definite
         // (the identity on a full, regular neighbourhood)
         vector2D gradC(Zero), g(Zero);
-        tensor2D M(Zero), Mf(Zero), S(Zero);
+        tensor2D Mf(Zero), Mw(Zero), S(Zero);
         bool nearSurface = surface[i];
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
             const label j = nbr[k];
             const vector2D d(x[j] - x[i]);
-            const scalar r = mag(d);
-            if (r < minR || r >= re)
+            const scalar r2 = magSqr(d);
+            if (r2 < minR2 || r2 >= re2)
             {
                 continue;
             }
-            const vector2D gW((-V*dWdr(r, re)/r)*d);    // V grad_i W_ij
+            scalar Wr, c;
+            kernel.evaluate(::sqrt(r2), Wr, c);
+            const vector2D gW(c*d);                     // V grad_i W_ij
             g += gW;
-            gradC += (1 + R_*antiClumping(W(r, re)/Wl0))*gW;
-            M += gW*d;
+            gradC += (1 + R_*antiClumping(Wr*invWl0))*gW;
             if (kind[j] == particleKind::fluid)
             {
                 Mf += gW*d;
                 S += gW*(U[j] - U[i]);
                 nearSurface = nearSurface || surface[j];
             }
+            else
+            {
+                Mw += gW*d;
+            }
         }
+        // (M over all neighbours: the fluid's part and the walls')
+        const tensor2D M(Mf + Mw);
 
         if (nearSurface)
         {

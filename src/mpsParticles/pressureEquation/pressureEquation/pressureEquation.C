@@ -159,13 +159,14 @@ void Foam::pressureEquation::assemble
     };
     ppeMatrix::StorageIndex* outer = A.outerIndexPtr();
     outer[0] = 0;
+
+    #pragma omp parallel for schedule(dynamic, 512)
     for (label i = 0; i < nPart; ++i)
     {
         if (unknown_[i] < 0 || !owned(i))
         {
             continue;
         }
-        const label row = unknown_[i] - rowStart_;
         label nnz = 1;
         if (!zeroRow_[i])
         {
@@ -174,7 +175,11 @@ void Foam::pressureEquation::assemble
                 nnz += coupled(nbr[k]);
             }
         }
-        outer[row + 1] = outer[row] + nnz;
+        outer[unknown_[i] - rowStart_ + 1] = nnz;
+    }
+    for (label row = 0; row < nUnknowns; ++row)
+    {
+        outer[row + 1] += outer[row];
     }
     A.resizeNonZeros(outer[nUnknowns]);
     ppeMatrix::StorageIndex* cols = A.innerIndexPtr();
@@ -183,7 +188,7 @@ void Foam::pressureEquation::assemble
     // A typical diagonal, for the zero rows
     const scalar surfaceDiag = lapCoeff*n0L;
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(dynamic, 512)
     for (label i = 0; i < nPart; ++i)
     {
         if (unknown_[i] < 0 || !owned(i))
@@ -432,9 +437,9 @@ void Foam::pressureEquation::solve(const scalar dt)
         clampReported_ = true;
     }
     const clockValue clock(true);
-    Eigen::VectorXd b;
-    Eigen::VectorXd sol;
-    ppeMatrix A;
+    ppeMatrix& A = A_;
+    Eigen::VectorXd& b = b_;
+    Eigen::VectorXd& sol = sol_;
     system(dt, A, b, sol);
 
     // The relative residual of the last step's pressure (the log's initial
