@@ -118,6 +118,7 @@ void Foam::mpsFluid::updateNeighbours()
     const labelList& nbr = nbrs_.neighbours();
     const label nPairs = nbrs_.nPairs();
     wN_.setSize(nPairs);
+    dwN_.setSize(nPairs);
     if (!sameG_)
     {
         wG_.setSize(nPairs);
@@ -131,10 +132,15 @@ void Foam::mpsFluid::updateNeighbours()
     #pragma omp parallel for schedule(dynamic, 512)
     for (label i = 0; i < cloud_.size(); ++i)
     {
+        // Distances first (in wN_), then the kernel over the row
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
-            const scalar r = max(mag(x[nbr[k]] - x[i]), minR_);
-            wN_[k] = kN_->w(r);
+            wN_[k] = max(mag(x[nbr[k]] - x[i]), minR_);
+        }
+        const label k0 = offsets[i], nk = offsets[i + 1] - k0;
+        for (label k = k0; k < k0 + nk; ++k)
+        {
+            const scalar r = wN_[k];
             if (!sameG_)
             {
                 wG_[k] = kG_->w(r);
@@ -144,6 +150,7 @@ void Foam::mpsFluid::updateNeighbours()
                 wL_[k] = kL_->w(r);
             }
         }
+        kN_->weights(wN_.cdata() + k0, nk, wN_.data() + k0, dwN_.data() + k0);
     }
 }
 
@@ -301,7 +308,11 @@ Foam::mpsFluid::mpsFluid
     search_(interactionRadius(), readSkin(dict)*l0_),
     sameG_(sameKernel(kG_(), kN_())),
     sameL_(sameKernel(kL_(), kN_())),
-    pairsN_{cloud_, nbrs_, wN_, kN_(), n0N_, kN_->latticeLambda(l0_), minR_},
+    pairsN_
+    {
+        cloud_, nbrs_, wN_, kN_(), n0N_, kN_->latticeLambda(l0_), minR_,
+        &dwN_
+    },
     pairsG_
     {
         cloud_, nbrs_, sameG_ ? wN_ : wG_, kG_(), n0G_,

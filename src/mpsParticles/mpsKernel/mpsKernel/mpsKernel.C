@@ -39,6 +39,23 @@ Foam::mpsKernel::mpsKernel(const dictionary& dict, const scalar re)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::mpsKernel::weights
+(
+    const scalar* r,
+    const label n,
+    scalar* w,
+    scalar* dwdrByR
+) const
+{
+    for (label k = 0; k < n; ++k)
+    {
+        const scalar rk = r[k];
+        w[k] = this->w(rk);
+        dwdrByR[k] = dwdr(rk)/rk;
+    }
+}
+
+
 Foam::scalar Foam::mpsKernel::latticeNumberDensity(const scalar l0) const
 {
     const label m = label(re_/l0) + 1;

@@ -63,4 +63,24 @@ Foam::scalar Foam::mpsKernels::polynomial::dwdr(const scalar r) const
 }
 
 
+void Foam::mpsKernels::polynomial::weights
+(
+    const scalar* r,
+    const label n,
+    scalar* w,
+    scalar* dwdrByR
+) const
+{
+    // s = max(1 - r/re, 0): w = s^3, (dw/dr)/r = -3 s^2/(re r)
+    #pragma omp simd
+    for (label k = 0; k < n; ++k)
+    {
+        const scalar rk = r[k];
+        const scalar s = std::max(1 - rk*invRe_, scalar(0));
+        w[k] = s*s*s;
+        dwdrByR[k] = -3*s*s*invRe_/rk;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

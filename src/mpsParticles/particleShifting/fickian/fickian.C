@@ -51,6 +51,12 @@ inline Foam::scalar Foam::particleShiftings::fickian::antiClumping
     const scalar ratio
 ) const
 {
+    if (wholeExponent_ == 4)
+    {
+        // Lind et al.'s n, every pair: no loop, no branch
+        const scalar r2 = ratio*ratio;
+        return r2*r2;
+    }
     if (wholeExponent_ < 0)
     {
         return ::pow(ratio, exponent_);

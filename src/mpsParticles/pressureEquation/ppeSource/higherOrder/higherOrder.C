@@ -50,11 +50,7 @@ Foam::scalar Foam::ppeSources::higherOrder::compressionRate
     const bool airSites
 ) const
 {
-    scalar nRate =
-        numberDensityRate
-        (
-            number_.cloud, number_.pairs, number_.kernel, i, number_.minR
-        )/number_.n0;
+    scalar nRate = numberDensityRate(number_, i)/number_.n0;
     if (nRate > 0)
     {
         nRate = max(nRate - deficit(i, airSites)/dt, scalar(0));
