@@ -351,9 +351,13 @@ void Foam::mpsFluid::viscousAcceleration(List<vector2D>& acc)
     const UList<particleKind>& kind = cloud_.kind();
     const label n = cloud_.size();
 
-    search_.find(x, nActive(), cloud_.revision(), kV_->re(), nbrsV_);
-    const labelList& offsets = nbrsV_.offsets();
-    const labelList& nbr = nbrsV_.neighbours();
+    // Over the search's candidates, a superset of the pairs within the
+    // viscosity's radius: the kernel is zero beyond it (no list filtered
+    // for this one sum)
+    const neighbourList& pairs =
+        search_.candidates(x, nActive(), cloud_.revision());
+    const labelList& offsets = pairs.offsets();
+    const labelList& nbr = pairs.neighbours();
     const scalar coeff = nu_*2*2/(lambdaV_*n0V_);
 
     acc.setSize(n);
@@ -468,7 +472,8 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
 
     info_.nCollisions = collision_->correct
     (
-        cloud_, nbrsV_, l0_, dt, cloud_.x(), cloud_.U()
+        cloud_, search_.candidates(cloud_.x(), nActive(), cloud_.revision()),
+        l0_, dt, cloud_.x(), cloud_.U()
     );
     syncHalos(cloud_.U());
     syncHalos(cloud_.x());

@@ -63,6 +63,27 @@ Foam::neighbourSearch::neighbourSearch(const scalar radius, const scalar skin)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::neighbourList& Foam::neighbourSearch::candidates
+(
+    const UList<vector2D>& x,
+    const label nActive,
+    const label revision
+)
+{
+    ++nSearches_;
+    if (skin_ <= 0 || !valid(x, nActive, revision, radius_))
+    {
+        ++nBuilds_;
+        candidates_.build(x, radius_ + skin_, nActive);
+        xRef_ = SubList<vector2D>(x, min(nActive, x.size()));
+        size_ = x.size();
+        nActive_ = nActive;
+        revision_ = skin_ > 0 ? revision : -1;
+    }
+    return candidates_;
+}
+
+
 void Foam::neighbourSearch::find
 (
     const UList<vector2D>& x,
