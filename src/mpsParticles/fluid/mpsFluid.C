@@ -467,13 +467,17 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
 
     ++info_.nSteps;
     redistribute();
+    // The search's candidates at x^k: the viscosity sums over them (in
+    // predict, the same list), and the collisions find their pairs, closer
+    // than l0 at x*, among them (no search at x*, which may not be finite)
+    const neighbourList& candidates =
+        search_.candidates(cloud_.x(), nActive(), cloud_.revision());
     predict(dt);
     lap(info_.timeRest);
 
     info_.nCollisions = collision_->correct
     (
-        cloud_, search_.candidates(cloud_.x(), nActive(), cloud_.revision()),
-        l0_, dt, cloud_.x(), cloud_.U()
+        cloud_, candidates, l0_, dt, cloud_.x(), cloud_.U()
     );
     syncHalos(cloud_.U());
     syncHalos(cloud_.x());

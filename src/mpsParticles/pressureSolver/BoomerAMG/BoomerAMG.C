@@ -155,7 +155,6 @@ Foam::pressureSolver::performance Foam::pressureSolvers::BoomerAMG::solve
     const bool parallel
 )
 {
-    performance perf;
     const HYPRE_BigInt n = A.rows();
     label nGlobal = n;
     if (parallel)
@@ -164,7 +163,7 @@ Foam::pressureSolver::performance Foam::pressureSolvers::BoomerAMG::solve
     }
     if (nGlobal == 0)
     {
-        return perf;
+        return performance();
     }
 
     hypreSystem sys(A, b, p, rowStart, parallel);
@@ -198,35 +197,15 @@ Foam::pressureSolver::performance Foam::pressureSolvers::BoomerAMG::solve
     ++h.age;
 
     // PCG on this matrix, preconditioned by the hierarchy
-    HYPRE_Solver pcg;
-    HYPRE_ParCSRPCGCreate(sys.comm(), &pcg);
-    HYPRE_PCGSetTol(pcg, tolerance_);
-    HYPRE_PCGSetMaxIter(pcg, maxIter_);
-    HYPRE_PCGSetTwoNorm(pcg, 1);
-    HYPRE_PCGSetPrintLevel(pcg, 0);
-    HYPRE_PCGSetPrecond
+    return sys.pcg
     (
-        pcg,
         reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSolve),
         reinterpret_cast<HYPRE_PtrToSolverFcn>(keepHierarchy),
-        h.amg
+        h.amg,
+        tolerance_,
+        maxIter_,
+        p
     );
-    HYPRE_ParCSRPCGSetup(pcg, sys.A(), sys.b(), sys.x());
-    const HYPRE_Int status =
-        HYPRE_ParCSRPCGSolve(pcg, sys.A(), sys.b(), sys.x());
-
-    HYPRE_Int iterations = 0;
-    HYPRE_Real residual = 0;
-    HYPRE_PCGGetNumIterations(pcg, &iterations);
-    HYPRE_PCGGetFinalRelativeResidualNorm(pcg, &residual);
-    sys.solution(p);
-    HYPRE_ClearAllErrors();
-    HYPRE_ParCSRPCGDestroy(pcg);
-
-    perf.iterations = iterations;
-    perf.residual = residual;
-    perf.converged = (status == 0 && residual <= tolerance_);
-    return perf;
 }
 
 

@@ -148,45 +148,24 @@ Foam::pressureSolver::performance Foam::pressureSolvers::PCG::solve
             << "diagonal, or type BoomerAMG" << exit(FatalIOError);
     }
 
-    performance perf;
     label nGlobal = A.rows();
     reduce(nGlobal, sumOp<label>());
     if (nGlobal == 0)
     {
-        return perf;
+        return performance();
     }
 
     hypreSystem::initialise();
     hypreSystem sys(A, b, p, rowStart, true);
-    HYPRE_Solver pcg;
-    HYPRE_ParCSRPCGCreate(sys.comm(), &pcg);
-    HYPRE_PCGSetTol(pcg, tolerance_);
-    HYPRE_PCGSetMaxIter(pcg, maxIter_);
-    HYPRE_PCGSetTwoNorm(pcg, 1);
-    HYPRE_PCGSetPrintLevel(pcg, 0);
-    HYPRE_PCGSetPrecond
+    return sys.pcg
     (
-        pcg,
         reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_ParCSRDiagScale),
         reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_ParCSRDiagScaleSetup),
-        nullptr
+        nullptr,
+        tolerance_,
+        maxIter_,
+        p
     );
-    HYPRE_ParCSRPCGSetup(pcg, sys.A(), sys.b(), sys.x());
-    const HYPRE_Int status =
-        HYPRE_ParCSRPCGSolve(pcg, sys.A(), sys.b(), sys.x());
-
-    HYPRE_Int iterations = 0;
-    HYPRE_Real residual = 0;
-    HYPRE_PCGGetNumIterations(pcg, &iterations);
-    HYPRE_PCGGetFinalRelativeResidualNorm(pcg, &residual);
-    sys.solution(p);
-    HYPRE_ClearAllErrors();
-    HYPRE_ParCSRPCGDestroy(pcg);
-
-    perf.iterations = iterations;
-    perf.residual = residual;
-    perf.converged = (status == 0 && residual <= tolerance_);
-    return perf;
 }
 
 

@@ -166,6 +166,42 @@ void Foam::hypreSystem::solution(Eigen::VectorXd& p) const
 }
 
 
+Foam::pressureSolver::performance Foam::hypreSystem::pcg
+(
+    HYPRE_PtrToSolverFcn precondSolve,
+    HYPRE_PtrToSolverFcn precondSetup,
+    HYPRE_Solver precond,
+    const scalar tolerance,
+    const label maxIter,
+    Eigen::VectorXd& p
+) const
+{
+    HYPRE_Solver solver;
+    HYPRE_ParCSRPCGCreate(comm_, &solver);
+    HYPRE_PCGSetTol(solver, tolerance);
+    HYPRE_PCGSetMaxIter(solver, maxIter);
+    HYPRE_PCGSetTwoNorm(solver, 1);
+    HYPRE_PCGSetPrintLevel(solver, 0);
+    HYPRE_PCGSetPrecond(solver, precondSolve, precondSetup, precond);
+    HYPRE_ParCSRPCGSetup(solver, A(), b(), x());
+    const HYPRE_Int status = HYPRE_ParCSRPCGSolve(solver, A(), b(), x());
+
+    HYPRE_Int iterations = 0;
+    HYPRE_Real residual = 0;
+    HYPRE_PCGGetNumIterations(solver, &iterations);
+    HYPRE_PCGGetFinalRelativeResidualNorm(solver, &residual);
+    solution(p);
+    HYPRE_ClearAllErrors();
+    HYPRE_ParCSRPCGDestroy(solver);
+
+    pressureSolver::performance perf;
+    perf.iterations = iterations;
+    perf.residual = residual;
+    perf.converged = (status == 0 && residual <= tolerance);
+    return perf;
+}
+
+
 HYPRE_IJMatrix Foam::hypreSystem::release()
 {
     HYPRE_IJMatrix A = Aij_;
