@@ -174,7 +174,7 @@ void Foam::mpsFluid::updateNumberDensity()
 }
 
 
-void Foam::mpsFluid::predict(const scalar dt)
+void Foam::mpsFluid::predict(const scalar dt, const neighbourList& pairs)
 {
     UList<vector2D>& x = cloud_.x();
     UList<vector2D>& U = cloud_.U();
@@ -182,7 +182,7 @@ void Foam::mpsFluid::predict(const scalar dt)
 
     // Viscous acceleration from the velocities at the start of the step
     List<vector2D> acc;
-    viscousAcceleration(acc);
+    viscousAcceleration(pairs, acc);
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < cloud_.size(); ++i)
@@ -346,16 +346,24 @@ Foam::mpsFluid::mpsFluid
 
 void Foam::mpsFluid::viscousAcceleration(List<vector2D>& acc)
 {
+    viscousAcceleration
+    (
+        search_.candidates(cloud_.x(), nActive(), cloud_.revision()), acc
+    );
+}
+
+
+void Foam::mpsFluid::viscousAcceleration
+(
+    const neighbourList& pairs,
+    List<vector2D>& acc
+) const
+{
     const UList<vector2D>& x = cloud_.x();
     const UList<vector2D>& U = cloud_.U();
     const UList<particleKind>& kind = cloud_.kind();
     const label n = cloud_.size();
 
-    // Over the search's candidates, a superset of the pairs within the
-    // viscosity's radius: the kernel is zero beyond it (no list filtered
-    // for this one sum)
-    const neighbourList& pairs =
-        search_.candidates(x, nActive(), cloud_.revision());
     const labelList& offsets = pairs.offsets();
     const labelList& nbr = pairs.neighbours();
     const scalar coeff = nu_*2*2/(lambdaV_*n0V_);
@@ -467,12 +475,12 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
 
     ++info_.nSteps;
     redistribute();
-    // The search's candidates at x^k: the viscosity sums over them (in
-    // predict, the same list), and the collisions find their pairs, closer
-    // than l0 at x*, among them (no search at x*, which may not be finite)
+    // The search's candidates at x^k: the viscosity sums over them, and
+    // the collisions find their pairs, closer than l0 at x*, among them
+    // (no search at x*, which may not be finite)
     const neighbourList& candidates =
         search_.candidates(cloud_.x(), nActive(), cloud_.revision());
-    predict(dt);
+    predict(dt, candidates);
     lap(info_.timeRest);
 
     info_.nCollisions = collision_->correct

@@ -45,6 +45,22 @@ bool Foam::neighbourSearch::valid
 }
 
 
+void Foam::neighbourSearch::build
+(
+    const UList<vector2D>& x,
+    const label nActive,
+    const label revision
+)
+{
+    ++nBuilds_;
+    candidates_.build(x, radius_ + skin_, nActive);
+    xRef_ = SubList<vector2D>(x, min(nActive, x.size()));
+    size_ = x.size();
+    nActive_ = nActive;
+    revision_ = revision;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::neighbourSearch::neighbourSearch(const scalar radius, const scalar skin)
@@ -73,12 +89,7 @@ const Foam::neighbourList& Foam::neighbourSearch::candidates
     ++nSearches_;
     if (skin_ <= 0 || !valid(x, nActive, revision, radius_))
     {
-        ++nBuilds_;
-        candidates_.build(x, radius_ + skin_, nActive);
-        xRef_ = SubList<vector2D>(x, min(nActive, x.size()));
-        size_ = x.size();
-        nActive_ = nActive;
-        revision_ = skin_ > 0 ? revision : -1;
+        build(x, nActive, revision);
     }
     return candidates_;
 }
@@ -102,12 +113,7 @@ void Foam::neighbourSearch::find
     }
     if (!valid(x, nActive, revision, radius))
     {
-        ++nBuilds_;
-        candidates_.build(x, radius_ + skin_, nActive);
-        xRef_ = SubList<vector2D>(x, min(nActive, x.size()));
-        size_ = x.size();
-        nActive_ = nActive;
-        revision_ = revision;
+        build(x, nActive, revision);
     }
     result.filter(candidates_, x, radius);
 }
