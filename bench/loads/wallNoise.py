@@ -1,6 +1,6 @@
 #------------------------------------------------------------------------------
 # mpsFsiFoam: bench/loads/wallNoise.py - where the rigid wedge's load noise
-# lives along its right panel (issue 16), from the wall particles' pressures
+# lives along its right panel (doc/studies/2026-12-03-slamming-loads.md), from the wall particles' pressures
 # written every step.
 #
 # Usage: pvpython bench/loads/wallNoise.py <case> <l0>

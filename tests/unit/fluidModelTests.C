@@ -52,7 +52,7 @@ TEST_CASE("flat-surface asymmetry F0 at re 2.1 l0 by hand")
     const scalar w2 = 2.1/std::sqrt(2.0) - 1;
     const scalar F0 = 2/n0*(1.1 + 2*w2/std::sqrt(2.0) + 0.05);
     CHECK(k->latticeSurfaceAsymmetry(0.01) == Approx(F0).epsilon(1e-12));
-    CHECK(F0 == Approx(0.561).epsilon(1e-3));       // physics.md
+    CHECK(F0 == Approx(0.561).epsilon(1e-3));       // doc/physics.md
 }
 
 

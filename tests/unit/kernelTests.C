@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
     Kernels: lattice constants n0 and lambda against sums written out by
-    hand, the values of physics.md, and each kernel's defining properties.
+    hand, the values of doc/physics.md, and each kernel's defining properties.
 \*---------------------------------------------------------------------------*/
 
 #include <catch2/catch.hpp>
@@ -28,7 +28,7 @@ TEST_CASE("original kernel lattice sums by hand")
     CHECK(k->latticeNumberDensity(l0) == Approx(n0).epsilon(1e-12));
     CHECK(k->latticeLambda(l0) == Approx(lambda).epsilon(1e-12));
 
-    // The table of physics.md (4 to 5 digits)
+    // The table of doc/physics.md (4 to 5 digits)
     CHECK(k->latticeNumberDensity(l0) == Approx(6.5397).epsilon(2e-5));
     CHECK(k->latticeLambda(l0)/sqr(l0) == Approx(1.3884).epsilon(5e-5));
 }

@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
   mpsFsiFoam unit tests: the fluid's operators and the consistency each
-  claims (issue 16): the pressure gradient family.
+  claims: the pressure gradient family.
 \*---------------------------------------------------------------------------*/
 
 #include <catch2/catch.hpp>

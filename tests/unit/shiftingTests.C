@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  mpsFsiFoam unit tests: particle shifting (issue 16). Fickian shifting
+  mpsFsiFoam unit tests: particle shifting. Fickian shifting
   (Lind et al. 2012) leaves a regular lattice where it is, walls and flat
   free surface included; it makes a disordered block regular without
   moving its free surface into the air; it carries a linear velocity field
