@@ -15,6 +15,8 @@ License
 #include "clockValue.H"
 #include "inputChecks.H"
 
+#include <vector>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -370,19 +372,35 @@ void Foam::mpsFluid::viscousAcceleration
 
     acc.setSize(n);
 
-    #pragma omp parallel for schedule(dynamic, 512)
-    for (label i = 0; i < n; ++i)
+    #pragma omp parallel
     {
-        vector2D lapU(Zero);
-        if (kind[i] == particleKind::fluid && nu_ > 0)
+        // A row's weights at once (the kernel's vectorised values), then
+        // the sum in the row's order
+        std::vector<scalar> w;
+
+        #pragma omp for schedule(dynamic, 512)
+        for (label i = 0; i < n; ++i)
         {
-            for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+            vector2D lapU(Zero);
+            if (kind[i] == particleKind::fluid && nu_ > 0)
             {
-                const label j = nbr[k];
-                lapU += kV_->w(max(mag(x[j] - x[i]), minR_))*(U[j] - U[i]);
+                const label k0 = offsets[i], nk = offsets[i + 1] - k0;
+                if (label(w.size()) < nk)
+                {
+                    w.resize(nk);
+                }
+                for (label l = 0; l < nk; ++l)
+                {
+                    w[l] = max(mag(x[nbr[k0 + l]] - x[i]), minR_);
+                }
+                kV_->values(w.data(), nk, w.data());
+                for (label l = 0; l < nk; ++l)
+                {
+                    lapU += w[l]*(U[nbr[k0 + l]] - U[i]);
+                }
             }
+            acc[i] = coeff*lapU;
         }
-        acc[i] = coeff*lapU;
     }
 }
 

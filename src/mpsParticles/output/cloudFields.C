@@ -53,6 +53,10 @@ Foam::cloudFields::cloudFields
         );
     }
     ids_.transfer(ids);
+    if (order.size())
+    {
+        cells_ = labelList(order, ids_);
+    }
 
     positions_.setSize(ids_.size());
     forAll(ids_, k)

@@ -19,6 +19,8 @@ License
 #include "Time.H"
 #include "Pstream.H"
 #include "writeChecks.H"
+#include "indexedOctree.H"
+#include "treeDataCell.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -106,6 +108,31 @@ Foam::lagrangianCloudWriter::lagrangianCloudWriter(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::labelList Foam::lagrangianCloudWriter::cells
+(
+    const word& name,
+    const UList<point>& x
+) const
+{
+    // polyMesh::findCell would try the nearest cell centre (of all cells)
+    // and then every cell for a point outside the mesh; the octree tries
+    // the ten or so cells of a leaf, the hint one
+    const indexedOctree<treeDataCell>& tree = mesh_.cellTree();
+    labelList& hint = cellHints_(name);
+    labelList c(x.size());
+    forAll(x, i)
+    {
+        const label h = (i < hint.size()) ? hint[i] : -1;
+        c[i] =
+            (h >= 0 && mesh_.pointInCell(x[i], h, polyMesh::CELL_TETS))
+          ? h
+          : tree.findInside(x[i]);
+    }
+    hint = c;
+    return c;
+}
+
+
 Foam::fileName Foam::lagrangianCloudWriter::write
 (
     const cloudFields& cloud,
@@ -136,10 +163,16 @@ Foam::fileName Foam::lagrangianCloudWriter::write
         io.writeHeader(os, "Cloud<passiveParticle>");
 
         const pointField& x = cloud.positions();
+        const labelList c
+        (
+            cloud.cells().size() == x.size()
+          ? cloud.cells()
+          : cells(cloud.name(), x)
+        );
         os  << x.size() << nl << token::BEGIN_LIST << nl;
-        for (const point& p : x)
+        forAll(x, i)
         {
-            os  << p << token::SPACE << mesh_.findCell(p) << nl;
+            os  << x[i] << token::SPACE << c[i] << nl;
         }
         os  << token::END_LIST << nl;
         IOobject::writeEndDivider(os);

@@ -84,12 +84,12 @@ Foam::PtrList<Foam::cloudFields> Foam::mpsCloudOutput::fields
     labelList cellOrder;
     if (!distribution)
     {
-        cellOrder.setSize(cloud.size());
-        forAll(cellOrder, i)
+        pointField x(cloud.size());
+        forAll(x, i)
         {
-            const vector2D& x = cloud.x()[i];
-            cellOrder[i] = mesh_.findCell(point(x.x(), x.y(), 0));
+            x[i] = point(cloud.x()[i].x(), cloud.x()[i].y(), 0);
         }
+        cellOrder = lagrangian_.cells("cloud", x);
     }
     PtrList<cloudFields> clouds(outputClouds::names().size());
     any.setSize(clouds.size());

@@ -15,6 +15,8 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include "inputChecks.H"
 
+#include <vector>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -61,19 +63,36 @@ void Foam::freeSurfaceModels::improved::wallNumberDensityTest
     const scalar limit = wallBeta_*wallN0_;
     const scalar minR = 1e-3*l0_;
 
-    #pragma omp parallel for schedule(dynamic, 64)
-    for (label i = 0; i < cloud.size(); ++i)
+    #pragma omp parallel
     {
-        if (kinds[i] != particleKind::wall)
+        // A row's weights at once (the kernel's vectorised values), summed
+        // in the row's order
+        std::vector<scalar> w;
+
+        #pragma omp for schedule(dynamic, 64)
+        for (label i = 0; i < cloud.size(); ++i)
         {
-            continue;
+            if (kinds[i] != particleKind::wall)
+            {
+                continue;
+            }
+            const label k0 = offsets[i], nk = offsets[i + 1] - k0;
+            if (label(w.size()) < nk)
+            {
+                w.resize(nk);
+            }
+            for (label l = 0; l < nk; ++l)
+            {
+                w[l] = max(mag(x[nbr[k0 + l]] - x[i]), minR);
+            }
+            kernel.values(w.data(), nk, w.data());
+            scalar n = 0;
+            for (label l = 0; l < nk; ++l)
+            {
+                n += w[l];
+            }
+            surface[i] = (n < limit);
         }
-        scalar n = 0;
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-        {
-            n += kernel.w(max(mag(x[nbr[k]] - x[i]), minR));
-        }
-        surface[i] = (n < limit);
     }
 }
 

@@ -56,6 +56,20 @@ void Foam::mpsKernel::weights
 }
 
 
+void Foam::mpsKernel::values
+(
+    const scalar* r,
+    const label n,
+    scalar* w
+) const
+{
+    for (label k = 0; k < n; ++k)
+    {
+        w[k] = this->w(r[k]);
+    }
+}
+
+
 Foam::scalar Foam::mpsKernel::latticeNumberDensity(const scalar l0) const
 {
     const label m = label(re_/l0) + 1;

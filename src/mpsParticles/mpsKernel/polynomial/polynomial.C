@@ -83,4 +83,22 @@ void Foam::mpsKernels::polynomial::weights
 }
 
 
+void Foam::mpsKernels::polynomial::values
+(
+    const scalar* r,
+    const label n,
+    scalar* w
+) const
+{
+    // w(r) as one select (0 at and beyond re)
+    #pragma omp simd
+    for (label k = 0; k < n; ++k)
+    {
+        const scalar rk = r[k];
+        const scalar s = 1 - rk*invRe_;
+        w[k] = (rk >= re_) ? scalar(0) : s*s*s;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

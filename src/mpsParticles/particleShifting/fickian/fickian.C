@@ -17,6 +17,8 @@ License
 #include "tensor2D.H"
 #include "mathematicalConstants.H"
 
+#include <vector>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -216,7 +218,15 @@ Foam::scalar Foam::particleShiftings::fickian::shift
     List<vector2D> dU(n, Zero);
     scalar largest = 0;
 
-    #pragma omp parallel for schedule(dynamic, 512) reduction(max:largest)
+    #pragma omp parallel reduction(max:largest)
+    {
+    // A row's pairs within the support, gathered (index, d, r^2), their
+    // kernel values computed in one vectorisable loop, then summed in the
+    // row's order
+    std::vector<label> J;
+    std::vector<scalar> dx, dy, rr, Wr, c;
+
+    #pragma omp for schedule(dynamic, 512)
     for (label i = 0; i < n; ++i)
     {
         if
@@ -228,6 +238,41 @@ Foam::scalar Foam::particleShiftings::fickian::shift
             continue;
         }
 
+        const label k0 = offsets[i], nk = offsets[i + 1] - k0;
+        if (label(J.size()) < nk)
+        {
+            for (auto* v : {&dx, &dy, &rr, &Wr, &c})
+            {
+                v->resize(nk);
+            }
+            J.resize(nk);
+        }
+        label m = 0;
+        for (label k = k0; k < k0 + nk; ++k)
+        {
+            const label j = nbr[k];
+            const vector2D d(x[j] - x[i]);
+            const scalar r2 = magSqr(d);
+            if (r2 >= minR2 && r2 < re2)
+            {
+                J[m] = j;
+                dx[m] = d.x();
+                dy[m] = d.y();
+                rr[m] = r2;
+                ++m;
+            }
+        }
+        {
+            const scalar* rp = rr.data();
+            scalar* Wp = Wr.data();
+            scalar* cp = c.data();
+            #pragma omp simd
+            for (label l = 0; l < m; ++l)
+            {
+                kernel.evaluate(std::sqrt(rp[l]), Wp[l], cp[l]);
+            }
+        }
+
         // With d = x_j - x_i, grad_i W_ij = -W'(r) d/r points from i to j
         // (W' < 0): grad C points into the fluid, where the neighbours
         // are, and M = sum V grad_i W_ij d is symmetric positive definite
@@ -235,20 +280,13 @@ Foam::scalar Foam::particleShiftings::fickian::shift
         vector2D gradC(Zero), g(Zero);
         tensor2D Mf(Zero), Mw(Zero), S(Zero);
         bool nearSurface = surface[i];
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        for (label l = 0; l < m; ++l)
         {
-            const label j = nbr[k];
-            const vector2D d(x[j] - x[i]);
-            const scalar r2 = magSqr(d);
-            if (r2 < minR2 || r2 >= re2)
-            {
-                continue;
-            }
-            scalar Wr, c;
-            kernel.evaluate(::sqrt(r2), Wr, c);
-            const vector2D gW(c*d);                     // V grad_i W_ij
+            const label j = J[l];
+            const vector2D d(dx[l], dy[l]);
+            const vector2D gW(c[l]*d);                  // V grad_i W_ij
             g += gW;
-            gradC += (1 + R_*antiClumping(Wr*invWl0))*gW;
+            gradC += (1 + R_*antiClumping(Wr[l]*invWl0))*gW;
             if (kind[j] == particleKind::fluid)
             {
                 Mf += gW*d;
@@ -296,6 +334,7 @@ Foam::scalar Foam::particleShiftings::fickian::shift
             // grad U = Mf^-1 S (S_ab = sum V (grad_i W)_a (u_j - u_i)_b)
             dU[i] = dri & (inv(Mf) & S);
         }
+    }
     }
 
     #pragma omp parallel for schedule(static)
