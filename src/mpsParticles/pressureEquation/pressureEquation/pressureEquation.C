@@ -152,11 +152,18 @@ void Foam::pressureEquation::assemble
     // The matrix is written straight into compressed rows, in parallel:
     // row sizes first, then each row filled (sorted by column) on its own
     // (rows: this rank's, from rowStart_; columns: global row numbers)
-    auto coupled = [&](const label j)
+    // Each particle as a neighbour, read once a pair: its column where it
+    // is coupled (a row, not a zero row), -1 where it is not, -2 for a
+    // dummy (its weight is left out of the diagonal)
+    labelList column(nPart);
+    #pragma omp parallel for schedule(static)
+    for (label j = 0; j < nPart; ++j)
     {
-        return
-            kind[j] != particleKind::dummy && unknown_[j] >= 0 && !zeroRow_[j];
-    };
+        column[j] =
+            kind[j] == particleKind::dummy ? -2
+          : (unknown_[j] >= 0 && !zeroRow_[j]) ? unknown_[j]
+          : -1;
+    }
     ppeMatrix::StorageIndex* outer = A.outerIndexPtr();
     outer[0] = 0;
 
@@ -172,7 +179,7 @@ void Foam::pressureEquation::assemble
         {
             for (label k = offsets[i]; k < offsets[i + 1]; ++k)
             {
-                nnz += coupled(nbr[k]);
+                nnz += (column[nbr[k]] >= 0);
             }
         }
         outer[unknown_[i] - rowStart_ + 1] = nnz;
@@ -211,17 +218,17 @@ void Foam::pressureEquation::assemble
         label e = start;
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
-            const label j = nbr[k];
+            const label c = column[nbr[k]];
             nL += wL[k];
-            if (kind[j] == particleKind::dummy)
+            if (c == -2)
             {
                 continue;
             }
             const scalar a = lapCoeff*wL[k];
             diag += a;
-            if (coupled(j))
+            if (c >= 0)
             {
-                cols[e] = unknown_[j];
+                cols[e] = c;
                 vals[e] = -a;
                 ++e;
             }
