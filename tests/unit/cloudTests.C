@@ -9,6 +9,9 @@
 #include "mpsCloud.H"
 #include "cloudFields.H"
 #include "lagrangianCloudWriter.H"
+#include <iterator>
+#include "IFstream.H"
+#include "OStringStream.H"
 #include "lagrangianCloudReader.H"
 #include "particleGenerator.H"
 #include "cellModel.H"
@@ -313,6 +316,23 @@ TEST_CASE("output round trip: a written cloud reads back exactly")
         writer.write(cloudFields("wall", written), runTime.timeName())
        .empty()
     );
+    // The fields' text is OpenFOAM's own (the writer formats the values
+    // of a long list on the threads): the velocity's values, one a line,
+    // as Field's operator<< writes them
+    {
+        const cloudFields fluid("fluid", written);
+        OStringStream expected;
+        expected.precision(17);
+        expected << fluid.vectorFields()["U"];
+        IFstream is(runTime.path()/runTime.timeName()/"lagrangian/fluid/U");
+        const std::string text
+        (
+            (std::istreambuf_iterator<char>(is.stdStream())),
+            std::istreambuf_iterator<char>()
+        );
+        REQUIRE(fluid.size() > 10);
+        CHECK(text.find(expected.str()) != std::string::npos);
+    }
     IOstream::defaultPrecision(precision);
 
     const lagrangianCloudReader reader(mesh);

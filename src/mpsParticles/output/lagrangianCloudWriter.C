@@ -22,6 +22,11 @@ License
 #include "indexedOctree.H"
 #include "treeDataCell.H"
 
+#include <omp.h>
+#include <sstream>
+#include <string>
+#include <vector>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace Foam
@@ -60,6 +65,95 @@ static fileName writeInto(const regIOobject& obj, const fileName& folder)
 }
 
 
+// One value as OSstream writes it (std::ostream's << at the stream's
+// precision; a vector as "(x y z)")
+template<class Type>
+static void formatValue(std::ostream& s, const Type& v)
+{
+    s << v;
+}
+
+static void formatValue(std::ostream& s, const vector& v)
+{
+    s << '(' << v.x() << ' ' << v.y() << ' ' << v.z() << ')';
+}
+
+
+// Lines 0..n-1 of a list, formatted on the threads (each a block of them
+// into its own text, with the stream's precision and flags) and written in
+// order: the same bytes as one thread writing them, in a fraction of the
+// time (a write of the wedge's clouds is some 400,000 numbers)
+template<class Line>
+static void writeLines(OSstream& os, const label n, const Line& line)
+{
+    std::ostream& out = os.stdStream();
+    std::vector<std::string> text(omp_get_max_threads());
+
+    #pragma omp parallel num_threads(text.size())
+    {
+        const label t = omp_get_thread_num();
+        const label nt = omp_get_num_threads();
+        std::ostringstream s;
+        s.copyfmt(out);
+        for (label i = n*t/nt; i < n*(t + 1)/nt; ++i)
+        {
+            line(s, i);
+        }
+        text[t] = s.str();
+    }
+    for (const std::string& t : text)
+    {
+        out.write(t.data(), t.size());
+    }
+}
+
+
+// A field into the folder as writeInto writes it: a list of more than ten
+// values not all the same, in ASCII, as UList::writeList writes it (size,
+// one value a line) but formatted by writeLines; any other by OpenFOAM
+template<class Type>
+static fileName writeFieldInto(const IOField<Type>& fld, const fileName& folder)
+{
+    const Time& runTime = fld.time();
+    if
+    (
+        runTime.writeFormat() != IOstream::ASCII
+     || fld.size() <= 10
+     || fld.uniform()
+    )
+    {
+        return writeInto(fld, folder);
+    }
+    const fileName file(staged(fld, folder));
+    if (!isDir(file.path()) && !mkDir(file.path()))
+    {
+        return file.path();
+    }
+    OFstream os
+    (
+        file,
+        runTime.writeFormat(),
+        IOstream::currentVersion,
+        runTime.writeCompression()
+    );
+    fld.writeHeader(os);
+    os  << nl << fld.size() << nl << token::BEGIN_LIST << nl;
+    writeLines
+    (
+        os,
+        fld.size(),
+        [&fld](std::ostream& s, const label i)
+        {
+            formatValue(s, fld[i]);
+            s << '\n';
+        }
+    );
+    os  << token::END_LIST << nl;
+    IOobject::writeEndDivider(os);
+    return writeChecks::flushed(os) ? fileName() : file;
+}
+
+
 template<class Type>
 static fileName writeFields
 (
@@ -86,7 +180,7 @@ static fileName writeFields
             ),
             iter.val()
         );
-        const fileName failed(writeInto(fld, folder));
+        const fileName failed(writeFieldInto(fld, folder));
         if (!failed.empty())
         {
             return failed;
@@ -170,10 +264,16 @@ Foam::fileName Foam::lagrangianCloudWriter::write
           : cells(cloud.name(), x)
         );
         os  << x.size() << nl << token::BEGIN_LIST << nl;
-        forAll(x, i)
-        {
-            os  << x[i] << token::SPACE << c[i] << nl;
-        }
+        writeLines
+        (
+            os,
+            x.size(),
+            [&x, &c](std::ostream& s, const label i)
+            {
+                formatValue(s, x[i]);
+                s << ' ' << c[i] << '\n';
+            }
+        );
         os  << token::END_LIST << nl;
         IOobject::writeEndDivider(os);
         if (!writeChecks::flushed(os))
