@@ -41,9 +41,16 @@ static fileName staged(const IOobject& io, const fileName& folder)
 
 
 // Write an object into the folder (regIOobject::write would put it in the
-// current time's folder whatever its instance says); the file's name if
-// it could not be written, empty if it was
-static fileName writeInto(const regIOobject& obj, const fileName& folder)
+// current time's folder whatever its instance says): its header, its data
+// as writeData(os) writes it (the object's own, or the given one); the
+// file's name if it could not be written, empty if it was
+template<class WriteData>
+static fileName writeInto
+(
+    const regIOobject& obj,
+    const fileName& folder,
+    const WriteData& writeData
+)
 {
     const Time& runTime = obj.time();
     const fileName file(staged(obj, folder));
@@ -59,9 +66,15 @@ static fileName writeInto(const regIOobject& obj, const fileName& folder)
         runTime.writeCompression()
     );
     obj.writeHeader(os);
-    obj.writeData(os);
+    writeData(os);
     IOobject::writeEndDivider(os);
     return writeChecks::flushed(os) ? fileName() : file;
+}
+
+
+static fileName writeInto(const regIOobject& obj, const fileName& folder)
+{
+    return writeInto(obj, folder, [&obj](OSstream& os) { obj.writeData(os); });
 }
 
 
@@ -114,43 +127,35 @@ static void writeLines(OSstream& os, const label n, const Line& line)
 template<class Type>
 static fileName writeFieldInto(const IOField<Type>& fld, const fileName& folder)
 {
-    const Time& runTime = fld.time();
     if
     (
-        runTime.writeFormat() != IOstream::ASCII
+        fld.time().writeFormat() != IOstream::ASCII
      || fld.size() <= 10
      || fld.uniform()
     )
     {
         return writeInto(fld, folder);
     }
-    const fileName file(staged(fld, folder));
-    if (!isDir(file.path()) && !mkDir(file.path()))
-    {
-        return file.path();
-    }
-    OFstream os
+    return writeInto
     (
-        file,
-        runTime.writeFormat(),
-        IOstream::currentVersion,
-        runTime.writeCompression()
-    );
-    fld.writeHeader(os);
-    os  << nl << fld.size() << nl << token::BEGIN_LIST << nl;
-    writeLines
-    (
-        os,
-        fld.size(),
-        [&fld](std::ostream& s, const label i)
+        fld,
+        folder,
+        [&fld](OSstream& os)
         {
-            formatValue(s, fld[i]);
-            s << '\n';
+            os  << nl << fld.size() << nl << token::BEGIN_LIST << nl;
+            writeLines
+            (
+                os,
+                fld.size(),
+                [&fld](std::ostream& s, const label i)
+                {
+                    formatValue(s, fld[i]);
+                    s << '\n';
+                }
+            );
+            os  << token::END_LIST << nl;
         }
     );
-    os  << token::END_LIST << nl;
-    IOobject::writeEndDivider(os);
-    return writeChecks::flushed(os) ? fileName() : file;
 }
 
 
