@@ -10,6 +10,8 @@
 #include "testTools.H"
 #include "pressureSolver.H"
 #include <Eigen/SparseCholesky>
+#include <Eigen/IterativeLinearSolvers>
+#include <omp.h>
 
 using namespace Foam;
 using Catch::Matchers::Contains;
@@ -109,6 +111,61 @@ TEST_CASE("PCG solves the PPE-shaped system to its tolerance")
         // Warm start from the solution
         const pressureSolver::performance warm = solver->solve(A, b, p);
         CHECK(warm.iterations <= 1);
+    }
+}
+
+
+TEST_CASE("the diagonal PCG is Eigen's iteration, the same on any number of threads")
+{
+    // The threaded, fused form against Eigen's ConjugateGradient with its
+    // diagonal preconditioner: the same iterations and the same solution
+    // (to round-off: only the inner products' order differs), stopped at
+    // the tolerance and at maxIter alike; and bitwise the same on one and
+    // on two threads (its sums run over fixed blocks of rows)
+    const ppeProblem problem;
+    const ppeMatrix& A = problem.A;
+    const Eigen::VectorXd& b = problem.b;
+
+    for (const label maxIter : {5000, 20})
+    {
+        INFO("maxIter " << maxIter);
+        const dictionary d(test::dict
+        (
+            "pressureSolver { type PCG; preconditioner diagonal; "
+            "tolerance 1e-10; maxIter " + std::to_string(maxIter) + "; }"
+        ));
+        autoPtr<pressureSolver> solver(pressureSolver::New(d));
+
+        Eigen::ConjugateGradient
+        <
+            ppeMatrix,
+            Eigen::Lower|Eigen::Upper,
+            Eigen::DiagonalPreconditioner<double>
+        > eigenCG;
+        eigenCG.setTolerance(1e-10);
+        eigenCG.setMaxIterations(maxIter);
+        eigenCG.compute(A);
+        const Eigen::VectorXd pEigen =
+            eigenCG.solveWithGuess(b, Eigen::VectorXd::Zero(A.rows()));
+
+        const int nThreads = omp_get_max_threads();
+        Eigen::VectorXd p1 = Eigen::VectorXd::Zero(A.rows());
+        omp_set_num_threads(1);
+        const pressureSolver::performance perf1 = solver->solve(A, b, p1);
+        omp_set_num_threads(2);
+        Eigen::VectorXd p2 = Eigen::VectorXd::Zero(A.rows());
+        const pressureSolver::performance perf2 = solver->solve(A, b, p2);
+        omp_set_num_threads(nThreads);
+
+        CHECK(perf1.iterations == eigenCG.iterations());
+        CHECK(perf1.converged == (eigenCG.info() == Eigen::Success));
+        CHECK(perf1.converged == (maxIter > 20));
+        CHECK(std::abs(perf1.residual - eigenCG.error()) < 1e-6*eigenCG.error());
+        CHECK((p1 - pEigen).norm() < 1e-10*pEigen.norm());
+
+        CHECK(perf2.iterations == perf1.iterations);
+        CHECK(perf2.residual == perf1.residual);
+        CHECK((p2 - p1).lpNorm<Eigen::Infinity>() == 0);
     }
 }
 

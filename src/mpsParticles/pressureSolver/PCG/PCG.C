@@ -17,6 +17,9 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include "inputChecks.H"
 #include <Eigen/IterativeLinearSolvers>
+#include <algorithm>
+#include <limits>
+#include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -65,6 +68,157 @@ Foam::pressureSolver::performance solveWith
     return perf;
 }
 
+// The diagonal PCG on the OpenMP threads, the iteration of Eigen's
+// ConjugateGradient (the same stopping test, residual and iteration count)
+// with its vector updates and inner products fused into three passes an
+// iteration: q = A p with p.q; x, r, z = D^-1 r with r.r and r.z; p. The
+// sums run over fixed blocks of rows, each summed in order, the blocks'
+// sums then added in order: the same result on any number of threads.
+Foam::pressureSolver::performance diagonalPCG
+(
+    const Foam::ppeMatrix& A,
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& x,
+    const Foam::scalar tolerance,
+    const Foam::label maxIter
+)
+{
+    using Foam::label;
+    using Foam::scalar;
+
+    const label n = A.rows();
+    const auto* outer = A.outerIndexPtr();
+    const auto* inner = A.innerIndexPtr();
+    const scalar* val = A.valuePtr();
+
+    constexpr label blockSize = 1024;
+    const label nBlocks = (n + blockSize - 1)/blockSize;
+    std::vector<scalar> sum1(nBlocks), sum2(nBlocks);
+    auto total = [nBlocks](const std::vector<scalar>& s)
+    {
+        scalar t = 0;
+        for (label k = 0; k < nBlocks; ++k)
+        {
+            t += s[k];
+        }
+        return t;
+    };
+
+    std::vector<scalar> invD(n), r(n), z(n), p(n), q(n);
+
+    // Jacobi's inverse diagonal (1 where the diagonal is zero, as Eigen's),
+    // r = b - A x
+    #pragma omp parallel for schedule(static)
+    for (label blk = 0; blk < nBlocks; ++blk)
+    {
+        scalar rr = 0, bb = 0;
+        for (label i = blk*blockSize; i < std::min(n, (blk + 1)*blockSize); ++i)
+        {
+            scalar d = 0, Ax = 0;
+            for (label k = outer[i]; k < outer[i + 1]; ++k)
+            {
+                Ax += val[k]*x[inner[k]];
+                if (inner[k] == i)
+                {
+                    d = val[k];
+                }
+            }
+            invD[i] = d != 0 ? 1/d : 1;
+            r[i] = b[i] - Ax;
+            rr += r[i]*r[i];
+            bb += b[i]*b[i];
+        }
+        sum1[blk] = rr;
+        sum2[blk] = bb;
+    }
+
+    Foam::pressureSolver::performance perf;
+    const scalar bNorm2 = total(sum2);
+    if (bNorm2 == 0)
+    {
+        x.setZero();
+        perf.converged = true;
+        return perf;
+    }
+    const scalar threshold =
+        std::max(Foam::sqr(tolerance)*bNorm2, std::numeric_limits<scalar>::min());
+    scalar rNorm2 = total(sum1);
+
+    label iter = 0;
+    if (rNorm2 >= threshold)
+    {
+        #pragma omp parallel for schedule(static)
+        for (label blk = 0; blk < nBlocks; ++blk)
+        {
+            scalar rz = 0;
+            for (label i = blk*blockSize; i < std::min(n, (blk + 1)*blockSize); ++i)
+            {
+                p[i] = invD[i]*r[i];
+                rz += r[i]*p[i];
+            }
+            sum1[blk] = rz;
+        }
+        scalar rz = total(sum1);
+
+        while (iter < maxIter)
+        {
+            #pragma omp parallel for schedule(static)
+            for (label blk = 0; blk < nBlocks; ++blk)
+            {
+                scalar pq = 0;
+                for (label i = blk*blockSize; i < std::min(n, (blk + 1)*blockSize); ++i)
+                {
+                    scalar Ap = 0;
+                    for (label k = outer[i]; k < outer[i + 1]; ++k)
+                    {
+                        Ap += val[k]*p[inner[k]];
+                    }
+                    q[i] = Ap;
+                    pq += p[i]*Ap;
+                }
+                sum1[blk] = pq;
+            }
+            const scalar alpha = rz/total(sum1);
+
+            #pragma omp parallel for schedule(static)
+            for (label blk = 0; blk < nBlocks; ++blk)
+            {
+                scalar rr = 0, rzNew = 0;
+                for (label i = blk*blockSize; i < std::min(n, (blk + 1)*blockSize); ++i)
+                {
+                    x[i] += alpha*p[i];
+                    r[i] -= alpha*q[i];
+                    z[i] = invD[i]*r[i];
+                    rr += r[i]*r[i];
+                    rzNew += r[i]*z[i];
+                }
+                sum1[blk] = rr;
+                sum2[blk] = rzNew;
+            }
+            rNorm2 = total(sum1);
+            if (rNorm2 < threshold)
+            {
+                break;
+            }
+            const scalar rzOld = rz;
+            rz = total(sum2);
+            const scalar beta = rz/rzOld;
+
+            #pragma omp parallel for schedule(static)
+            for (label i = 0; i < n; ++i)
+            {
+                p[i] = z[i] + beta*p[i];
+            }
+            ++iter;
+        }
+    }
+
+    perf.iterations = iter;
+    perf.residual = std::sqrt(rNorm2/bNorm2);
+    perf.converged = perf.residual <= tolerance;
+    return perf;
+}
+
 } // End anonymous namespace
 
 
@@ -108,13 +262,7 @@ Foam::pressureSolver::performance Foam::pressureSolvers::PCG::solve
 
     if (preconditioner_ == preconditionerType::diagonal)
     {
-        Eigen::ConjugateGradient
-        <
-            ppeMatrix,
-            Eigen::Lower|Eigen::Upper,
-            Eigen::DiagonalPreconditioner<double>
-        > cg;
-        return solveWith(cg, A, b, p, tolerance_, maxIter_);
+        return diagonalPCG(A, b, p, tolerance_, maxIter_);
     }
 
     Eigen::ConjugateGradient
