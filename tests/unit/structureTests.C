@@ -21,6 +21,9 @@
 #include "bodyMotion.H"
 #include "Random.H"
 #include "mathematicalConstants.H"
+#include "spaceTimeTable.H"
+#include <cstdio>
+#include <fstream>
 #include <array>
 #include <utility>
 
@@ -977,4 +980,115 @@ TEST_CASE("structureModel: a restored state repeats the step exactly (the implic
     CHECK(work1 == s->externalWork());
     CHECK(damping1 == s->dampingLoss());
     CHECK(s->time() > 0);
+}
+
+
+TEST_CASE("planeStrainPlate: the dynamic cantilever under a sudden load swings to twice its static strain at the first mode's period")
+{
+    // A load applied at once to an undamped elastic body from rest: each
+    // mode swings between zero and twice its static response, the first
+    // mode's period (Euler-Bernoulli, E' = E/(1 - nu^2): T = 2 pi/(1.8751^2
+    // sqrt(E' I/(rho H L^4))), 53.0 ms for the wedge's panel) dominating
+    // the strain near the clamp. Newmark's average acceleration keeps the
+    // amplitude (no numerical damping) and at 530 steps a period shifts it
+    // by (pi/530)^2/12 = 3e-6.
+    const scalar L = 0.3, H = 0.002, E = 68e9, nu = 0.3, rho = 2700;
+    const scalar q = 100, x = 0.03;
+    const planeStrainPlate statics(L, H, 150, 2, E, nu, q, 0, 0, false);
+    const scalar eStatic = statics.strainXX(x, 0);
+
+    const scalar Ep = E/(1 - nu*nu), I = H*H*H/12;
+    const scalar T =
+        2*constant::mathematical::pi
+       /(sqr(1.8751)*std::sqrt(Ep*I/(rho*H*sqr(sqr(L)))));
+
+    planeStrainPlate plate(L, H, 150, 2, E, nu, 0, 0, 0, false);
+    const scalar dt = 1e-4;
+    scalar largest = 0, firstDown = -1, previous = 0;
+    plate.integrate
+    (
+        rho, dt, label(1.3*T/dt),
+        [q](const double, const double) { return q; },
+        [&](const double t)
+        {
+            const scalar e = plate.strainXX(x, 0) - eStatic;
+            largest = max(largest, plate.strainXX(x, 0));
+            // The swing about the static strain crosses zero downward
+            // at three quarters of the period
+            if (firstDown < 0 && previous > 0 && e <= 0)
+            {
+                firstDown = t - dt*e/(e - previous);
+            }
+            previous = e;
+        }
+    );
+    WARN
+    (
+        "static strain " << eStatic << ", largest " << largest
+     << " (x " << largest/eStatic << "), period " << firstDown/0.75
+     << " s against Euler-Bernoulli " << T << " s"
+    );
+    CHECK(eStatic > 0);
+    CHECK(largest/eStatic == Approx(2).epsilon(0.05));
+    CHECK(firstDown/0.75 == Approx(T).epsilon(0.01));
+}
+
+
+TEST_CASE("spaceTimeTable: bilinear over s and t, clamped outside, a bad table named with its line")
+{
+    const fileName file("spaceTimeTableTest.dat");
+    auto write = [&file](const std::string& text)
+    {
+        std::ofstream os(file.c_str());
+        os << text;
+    };
+    // p = 2 + 3 s + 5 t + 7 s t, bilinear: interpolated exactly
+    write
+    (
+        "# a comment\n"
+        "s 0 0.1 0.3\n"
+        "0   2 2.3 2.9\n"
+        "1   7 8 10   # t = 1\n"
+        "\n"
+        "2.5 14.5 16.55 20.65\n"
+    );
+    const dictionary noDict;
+    const spaceTimeTable table(file, noDict);
+    auto p = [](scalar s, scalar t) { return 2 + 3*s + 5*t + 7*s*t; };
+    for (const scalar s : {0.0, 0.05, 0.1, 0.17, 0.3})
+    {
+        for (const scalar t : {0.0, 0.4, 1.0, 2.2, 2.5})
+        {
+            CHECK(table.value(s, t) == Approx(p(s, t)).epsilon(1e-12));
+        }
+    }
+    CHECK(table.value(-1, 0.4) == Approx(p(0, 0.4)).epsilon(1e-12));
+    CHECK(table.value(0.5, 0.4) == Approx(p(0.3, 0.4)).epsilon(1e-12));
+    CHECK(table.value(0.17, -3) == Approx(p(0.17, 0)).epsilon(1e-12));
+    CHECK(table.value(0.17, 9) == Approx(p(0.17, 2.5)).epsilon(1e-12));
+
+    const std::initializer_list<std::pair<std::string, std::string>> bad
+    {
+        {"s 0 0.1 0.1\n0 1 2 3\n", "line 1: the positions must increase"},
+        {"s 0 0.1\n0 1 2\n1 1\n", "line 3: a row holds 1 values for 2 positions"},
+        {"s 0 0.1\n0 1 2\n0 1 2\n", "line 3: the times must increase"},
+        {"s 0 0.1\n0 1 x\n", "line 2: a value is not a number"},
+        {"0 0.1\n", "line 1: the first line must be 's'"},
+        {"s 0 0.1\n", "no positions, or no time"}
+    };
+    for (const auto& b : bad)
+    {
+        write(b.first);
+        const std::string msg =
+            test::errorOf([&]{ spaceTimeTable t(file, noDict); });
+        INFO(msg);
+        CHECK_THAT(msg, Catch::Matchers::Contains(b.second));
+        CHECK_THAT(msg, Catch::Matchers::Contains("spaceTimeTableTest.dat"));
+    }
+    std::remove(file.c_str());
+    CHECK_THAT
+    (
+        test::errorOf([&]{ spaceTimeTable t(file, noDict); }),
+        Catch::Matchers::Contains("Cannot read the table")
+    );
 }

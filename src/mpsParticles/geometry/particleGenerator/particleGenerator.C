@@ -278,6 +278,23 @@ void Foam::particleGenerator::generate
         autoPtr<particleShape> shape(particleShape::New(rDict));
 
         const label nLayers = shape->nLayers(spacing);
+        if (rDict.found("thickness"))
+        {
+            // A whole number of rows: say so where it is not the thickness
+            // asked (a panel's bending stiffness goes as its cube)
+            const scalar asked = rDict.get<scalar>("thickness");
+            const scalar made = nLayers*spacing;
+            if (mag(made - asked) > 0.01*asked)
+            {
+                IOWarningInFunction(rDict)
+                    << "Region " << name << ": 'thickness' " << asked
+                    << " m at the spacing " << spacing << " m makes "
+                    << nLayers << " rows, " << made << " m thick ("
+                    << 100*(made/asked - 1) << "%: bending stiffness x "
+                    << pow3(made/asked) << "). For the thickness asked, a"
+                    << " spacing of thickness/n (n rows)" << endl;
+            }
+        }
         label dummyLayers = 0;
         if (rDict.found("dummyLayers"))
         {

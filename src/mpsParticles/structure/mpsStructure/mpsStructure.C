@@ -128,9 +128,20 @@ void Foam::mpsStructure::readLoads(const dictionary& loadsDict)
         inputChecks::keywords
         (
             d,
-            {"region", "normal", "pressure", "pressureCoeffs"},
+            {
+                "region", "normal", "pressure", "pressureCoeffs",
+                "pressureTable", "origin", "direction"
+            },
             "load " + e.keyword()
         );
+        if (d.found("pressure") == d.found("pressureTable"))
+        {
+            FatalIOErrorInFunction(d)
+                << "Load " << e.keyword() << " needs one of 'pressure' (a"
+                << " Function1 of time) and 'pressureTable' (a file of p"
+                << " over the distance along the face and time, with"
+                << " 'origin' and 'direction')" << exit(FatalIOError);
+        }
         surfaceLoad* load = new surfaceLoad;
         load->name = e.keyword();
         load->normal = d.get<vector2D>("normal");
@@ -146,7 +157,36 @@ void Foam::mpsStructure::readLoads(const dictionary& loadsDict)
             regionParticles(d.get<word>("region"), d),
             load->normal
         );
-        load->pressure = Function1<scalar>::New("pressure", d);
+        if (d.found("pressure"))
+        {
+            load->pressure = Function1<scalar>::New("pressure", d);
+        }
+        else
+        {
+            fileName file(d.get<fileName>("pressureTable"));
+            file.expand();
+            if (!file.isAbsolute())
+            {
+                file = time().path()/file;
+            }
+            load->table.reset(new spaceTimeTable(file, d));
+            const vector2D origin(d.get<vector2D>("origin"));
+            vector2D dir(d.get<vector2D>("direction"));
+            if (mag(dir) < SMALL)
+            {
+                FatalIOErrorInFunction(d)
+                    << "Entry 'direction' of load " << e.keyword()
+                    << " must not be zero" << exit(FatalIOError);
+            }
+            dir /= mag(dir);
+            // Each particle's s at its reference position
+            const List<vector2D>& X = model_->X();
+            load->s.setSize(load->particles.size());
+            forAll(load->particles, i)
+            {
+                load->s[i] = (X[load->particles[i]] - origin) & dir;
+            }
+        }
         Info<< "Structure load " << load->name << ": pressure on "
             << load->particles.size() << " particles of region "
             << d.get<word>("region") << " facing " << load->normal
@@ -440,6 +480,15 @@ bool Foam::mpsStructure::beginStep
     const scalar ds = model_->spacing();
     for (const surfaceLoad& load : loads_)
     {
+        if (load.table)
+        {
+            forAll(load.particles, i)
+            {
+                const scalar p = load.table->value(load.s[i], t);
+                f[load.particles[i]] -= (p*ds)*load.normal;
+            }
+            continue;
+        }
         const scalar p = load.pressure->value(t);
         for (const label k : load.particles)
         {
