@@ -51,23 +51,36 @@ using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-//- The cantilever from rest under the table's pressure: the gauges' strains
-int dynamicResponse(const argList& args)
+//- Stop unless every option named is given
+void require
+(
+    const argList& args,
+    const std::initializer_list<word> options,
+    const std::string& when
+)
 {
-    for
-    (
-        const word opt
-      : {"length", "thickness", "E", "nu", "rho", "offset", "deltaT",
-         "endTime", "gauges", "output"}
-    )
+    for (const word& opt : options)
     {
         if (!args.found(opt))
         {
             FatalErrorInFunction
-                << "with -table, option -" << opt << " is required (see -help)"
-                << exit(FatalError);
+                << when.c_str() << "option -" << opt
+                << " is required (see -help)" << exit(FatalError);
         }
     }
+}
+
+
+//- The cantilever from rest under the table's pressure: the gauges' strains
+int dynamicResponse(const argList& args)
+{
+    require
+    (
+        args,
+        {"length", "thickness", "E", "nu", "rho", "offset", "deltaT",
+         "endTime", "gauges", "output"},
+        "with -table, "
+    );
     const scalar L = args.opt<scalar>("length");
     const scalar h = args.opt<scalar>("thickness");
     const scalar E = args.opt<scalar>("E");
@@ -171,15 +184,7 @@ int main(int argc, char *argv[])
         return dynamicResponse(args);
     }
 
-    for (const word opt : {"length", "thickness", "E", "nu", "pressure"})
-    {
-        if (!args.found(opt))
-        {
-            FatalErrorInFunction
-                << "option -" << opt << " is required (see -help)"
-                << exit(FatalError);
-        }
-    }
+    require(args, {"length", "thickness", "E", "nu", "pressure"}, "");
     const scalar L = args.opt<scalar>("length");
     const scalar h = args.opt<scalar>("thickness");
     const scalar E = args.opt<scalar>("E");
