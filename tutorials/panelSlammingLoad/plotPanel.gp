@@ -10,7 +10,7 @@ do for [g in "30 120"] {
     set output 'strain'.g.'.png'
     col = (g eq "30") ? 2 : 4
     set title 'Wagner load, one way: strain at '.g.' mm from the keel'
-    plot p u ($1*1e3):(column(col)*1e6) w l lw 2 t 'particles (2 rows of 1.14 mm)', \
+    plot p u ($1*1e3):(column(col)*1e6) w l lw 2 t 'particles ('.rows.' rows of '.spacing.' m)', \
          'postProcessing/strainFE.dat' u ($1*1e3):(column(col)*1e6) w l dt 2 lw 2 t 'finite elements, '.made.' m', \
          'postProcessing/strainFE_nominal.dat' u ($1*1e3):(column(col)*1e6) w l dt 3 lw 2 t 'finite elements, '.nominal.' m'
 }
