@@ -235,26 +235,33 @@ Foam::label Foam::mpsFluid::removeOutside()
 {
     const UList<vector2D>& x = cloud_.x();
     const UList<particleKind>& kind = cloud_.kind();
-    List<bool> keep(cloud_.size(), true);
-    label nOut = 0;
-    forAll(x, i)
+    const vector2D lo(domain_.min().x(), domain_.min().y());
+    const vector2D hi(domain_.max().x(), domain_.max().y());
+    auto outside = [&](const label i)
     {
-        if
-        (
+        return
             kind[i] == particleKind::fluid
          && owned(i)
          && (
-                x[i].x() < domain_.min().x() || x[i].x() > domain_.max().x()
-             || x[i].y() < domain_.min().y() || x[i].y() > domain_.max().y()
-            )
-        )
-        {
-            keep[i] = false;
-            ++nOut;
-        }
+                x[i].x() < lo.x() || x[i].x() > hi.x()
+             || x[i].y() < lo.y() || x[i].y() > hi.y()
+            );
+    };
+
+    // Counted on the threads; the cloud is subset only when one left
+    label nOut = 0;
+    #pragma omp parallel for schedule(static) reduction(+:nOut)
+    for (label i = 0; i < cloud_.size(); ++i)
+    {
+        nOut += outside(i);
     }
     if (nOut)
     {
+        List<bool> keep(cloud_.size());
+        forAll(keep, i)
+        {
+            keep[i] = !outside(i);
+        }
         cloud_.subset(keep);
     }
     return nOut;

@@ -219,7 +219,16 @@ Foam::labelList Foam::lagrangianCloudWriter::cells
     const indexedOctree<treeDataCell>& tree = mesh_.cellTree();
     labelList& hint = cellHints_(name);
     labelList c(x.size());
-    forAll(x, i)
+
+    // The tests read only the mesh's geometry and the tree: what the mesh
+    // computes on demand is computed here, before the threads share it
+    (void)mesh_.cells();
+    (void)mesh_.cellCentres();
+    (void)mesh_.faceCentres();
+    (void)mesh_.tetBasePtIs();
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < x.size(); ++i)
     {
         const label h = (i < hint.size()) ? hint[i] : -1;
         c[i] =
