@@ -1,8 +1,9 @@
 # The elastic wedge's pictures (run in the case folder): strain at the
 # gauges 30 and 120 mm from the keel (the seed paper's Fig. 4), the force
-# of the water, and the wedge coloured by its axial strain at 0, 10, 20 and
-# 26 ms (the paper's Fig. 6). The gauges' columns of strain.dat, in the
-# order Time left30_wet left30_dry left120_wet left120_dry right30_wet
+# of the water, the wedge coloured by its axial strain at 0, 10, 20 and
+# 26 ms (the paper's Fig. 6), and the strain and deflection along the
+# panels at those times. The gauges' columns of strain.dat, in the order
+# Time left30_wet left30_dry left120_wet left120_dry right30_wet
 # right30_dry right120_wet right120_dry (bin/postProcessingColumns).
 # Wagner: the spray root passes 30 mm at 2.4 ms, 120 mm at 9.6 ms, the
 # chine (300 mm) at 23.9 ms.
@@ -66,4 +67,30 @@ do for [t in times] {
     plot "< lagrangianColumns ".t."/lagrangian/structure axialStrain" \
         u 1:2:($3*1e6) w p pt 7 ps 0.25 lc palette
 }
+unset multiplot
+
+# Strain and deflection along the panels (panelProfiles: every 10 mm from
+# the keel) at 0, 10, 20 and 26 ms, the times of the paper's Fig. 6: the
+# strain on the wet faces, the panels' deflection (positive: pushed in by
+# the water) as the deformed shape, drawn in mm
+reset
+set terminal pngcairo size 900,900 font ",11"
+set output "profiles.png"
+set multiplot layout 2,1 title "Along the panels from the keel (solid: right, dashed: left)"
+set grid
+set key top right
+set xlabel "distance from the keel [mm]"
+set xrange [0:300]
+profileTimes = "0 0.01 0.02 0.026"
+at(panel, q, t) = sprintf("< panelProfileAt %s %s %s", panel, q, t)
+set ylabel "wet-face strain [microstrain]"
+plot for [i = 1:words(profileTimes)] at("right", "strain", word(profileTimes, i)) \
+        u (1e3*$1):(1e6*$2) w lp pt 7 ps 0.5 lw 1.5 lc i t sprintf("%g ms", 1e3*word(profileTimes, i)), \
+     for [i = 1:words(profileTimes)] at("left", "strain", word(profileTimes, i)) \
+        u (1e3*$1):(1e6*$2) w l dt 2 lw 1 lc i notitle
+set ylabel "deflection [mm]"
+plot for [i = 1:words(profileTimes)] at("right", "deflection", word(profileTimes, i)) \
+        u (1e3*$1):(1e3*$2) w lp pt 7 ps 0.5 lw 1.5 lc i t sprintf("%g ms", 1e3*word(profileTimes, i)), \
+     for [i = 1:words(profileTimes)] at("left", "deflection", word(profileTimes, i)) \
+        u (1e3*$1):(1e3*$2) w l dt 2 lw 1 lc i notitle
 unset multiplot
