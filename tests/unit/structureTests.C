@@ -1034,6 +1034,38 @@ TEST_CASE("planeStrainPlate: the dynamic cantilever under a sudden load swings t
 }
 
 
+TEST_CASE("planeStrainPlate: the quasi-static response follows a growing load at each time with no swing")
+{
+    // A uniform pressure growing linearly in time, q(t) = q1 t/t1: without
+    // inertia the strain at each time is the static strain of q(t), which
+    // is linear in q (the same stiffness): eps(t) = eps1 t/t1 exactly, to
+    // the factorisation's round-off
+    const scalar L = 0.3, H = 0.002, E = 68e9, nu = 0.3;
+    const scalar q1 = 100, t1 = 0.01, x = 0.03;
+    const planeStrainPlate statics(L, H, 150, 2, E, nu, q1, 0, 0, false);
+    const scalar e1 = statics.strainXX(x, 0);
+
+    planeStrainPlate plate(L, H, 150, 2, E, nu, 0, 0, 0, false);
+    const scalar dt = 1e-3;
+    scalar worst = 0;
+    label n = 0;
+    plate.quasiStatic
+    (
+        dt, 10,
+        [&](const double, const double t) { return q1*t/t1; },
+        [&](const double t)
+        {
+            worst = max(worst, mag(plate.strainXX(x, 0) - e1*t/t1));
+            ++n;
+        }
+    );
+    WARN("static strain " << e1 << ", largest difference " << worst);
+    CHECK(n == 10);
+    CHECK(e1 > 0);
+    CHECK(worst < 1e-9*e1);
+}
+
+
 TEST_CASE("spaceTimeTable: bilinear over s and t, clamped outside, a bad table named with its line")
 {
     const fileName file("spaceTimeTableTest.dat");

@@ -31,14 +31,16 @@ Description
     thickness), no gravity; writes the axial strain on the loaded (top) and
     the other (bottom) face at each gauge, as the strainProbes function
     object does, a line per step: the reference of a panel under a known
-    slamming load (tutorials/panelSlammingLoad).
+    slamming load (tutorials/panelSlammingLoad). With -table -quasiStatic,
+    the static response to the table's load at each time (no inertia: the
+    quasi-static strain a hydroelastic campaign compares with).
 
 Usage
     plateReference -length 1 -thickness 0.05 -E 67.5e9 -nu 0.34
         -pressure 19620 [-rho 2700 -g 9.81] [-cantilever]
     plateReference -length 0.2966 -thickness 0.002 -E 68e9 -nu 0.3
         -rho 2700 -table p.dat -offset 0.0034 -deltaT 2e-5 -endTime 0.03
-        -gauges '(0.03 0.12)' -output strainFE.dat
+        -gauges '(0.03 0.12)' -output strainFE.dat [-quasiStatic]
 
 \*---------------------------------------------------------------------------*/
 
@@ -74,18 +76,23 @@ void require
 //- The cantilever from rest under the table's pressure: the gauges' strains
 int dynamicResponse(const argList& args)
 {
+    const bool quasiStatic = args.found("quasiStatic");
     require
     (
         args,
-        {"length", "thickness", "E", "nu", "rho", "offset", "deltaT",
-         "endTime", "gauges", "output"},
+        {"length", "thickness", "E", "nu", "offset", "deltaT", "endTime",
+         "gauges", "output"},
         "with -table, "
     );
+    if (!quasiStatic)
+    {
+        require(args, {"rho"}, "with -table (dynamic), ");
+    }
     const scalar L = args.opt<scalar>("length");
     const scalar h = args.opt<scalar>("thickness");
     const scalar E = args.opt<scalar>("E");
     const scalar nu = args.opt<scalar>("nu");
-    const scalar rho = args.opt<scalar>("rho");
+    const scalar rho = quasiStatic ? 1 : args.opt<scalar>("rho");
     const scalar offset = args.opt<scalar>("offset");
     const scalar dt = args.opt<scalar>("deltaT");
     const scalar endTime = args.opt<scalar>("endTime");
@@ -119,8 +126,9 @@ int dynamicResponse(const argList& args)
 
     OFstream os(args.opt<fileName>("output"));
     os  << "# Axial strain of a plane-strain cantilever (" << ex << " x " << ey
-        << " nine-node elements, Newmark average acceleration, dt " << dt
-        << " s) under p(s, t) of " << table.file() << nl
+        << " nine-node elements, "
+        << (quasiStatic ? "quasi-static: no inertia" : "Newmark average acceleration")
+        << ", dt " << dt << " s) under p(s, t) of " << table.file() << nl
         << "# Time";
     for (const scalar s : gauges)
     {
@@ -129,24 +137,28 @@ int dynamicResponse(const argList& args)
     os  << nl;
 
     const label nSteps = label(std::round(endTime/dt));
-    plate.integrate
-    (
-        rho, dt, nSteps,
-        [&](const double x, const double t)
+    auto load = [&](const double x, const double t)
+    {
+        return table.value(x + offset, t);
+    };
+    auto observe = [&](const double t)
+    {
+        os  << t;
+        for (const scalar s : gauges)
         {
-            return table.value(x + offset, t);
-        },
-        [&](const double t)
-        {
-            os  << t;
-            for (const scalar s : gauges)
-            {
-                os  << ' ' << plate.strainXX(s - offset, 0)
-                    << ' ' << plate.strainXX(s - offset, -h);
-            }
-            os  << nl;
+            os  << ' ' << plate.strainXX(s - offset, 0)
+                << ' ' << plate.strainXX(s - offset, -h);
         }
-    );
+        os  << nl;
+    };
+    if (quasiStatic)
+    {
+        plate.quasiStatic(dt, nSteps, load, observe);
+    }
+    else
+    {
+        plate.integrate(rho, dt, nSteps, load, observe);
+    }
     Info<< "Wrote " << os.name() << ": " << nSteps << " steps, "
         << gauges.size() << " gauges" << endl;
     return 0;
@@ -176,6 +188,12 @@ int main(int argc, char *argv[])
     argList::addOption("endTime", "s", "dynamic: the end time");
     argList::addOption("gauges", "(s ...)", "dynamic: the gauges' s");
     argList::addOption("output", "file", "dynamic: the strains' file");
+    argList::addBoolOption
+    (
+        "quasiStatic",
+        "with -table: the static response at each time (no inertia; -rho"
+        " not needed)"
+    );
 
     argList args(argc, argv, false, false, false);
 
