@@ -44,7 +44,10 @@ void Foam::functionObjects::panelProfiles::locate()
     {
         const labelList particles(structure.regionParticles(p.region, p.dict));
         p.axis = structure.geometry().axis(particles, p.end);
-        labelList face(structure.geometry().surfaceLayer(particles, p.normal));
+        const labelList face
+        (
+            structure.geometry().surfaceLayer(particles, p.normal)
+        );
         if (face.empty())
         {
             FatalIOErrorInFunction(p.dict)
@@ -53,50 +56,48 @@ void Foam::functionObjects::panelProfiles::locate()
                 << p.normal << exit(FatalIOError);
         }
 
-        // The face's particles in order of their distance from the end
-        scalarList s0(face.size());
-        forAll(face, i)
+        // The face's reach from the end
+        scalar sFirst = GREAT, sLast = -GREAT;
+        label first = face.first();
+        for (const label k : face)
         {
-            s0[i] = (X[face[i]] - p.end) & p.axis;
+            const scalar sk = (X[k] - p.end) & p.axis;
+            if (sk < sFirst)
+            {
+                sFirst = sk;
+                first = k;
+            }
+            sLast = max(sLast, sk);
         }
-        labelList order;
-        sortedOrder(s0, order);
-        face = labelList(UIndirectList<label>(face, order));
-        s0 = scalarList(UIndirectList<scalar>(s0, order));
 
-        // The stations: multiples of spacing within the face's reach, each
-        // between two face particles no more than two spacings apart
+        // The stations: multiples of spacing within that reach, each
+        // between two face particles as a strainProbes gauge
         DynamicList<station> stations;
-        label k = 0;
-        for (label m = 1; m*spacing_ <= s0.last() + SMALL*spacing_; ++m)
+        for (label m = 1; m*spacing_ < sLast; ++m)
         {
-            const scalar d = m*spacing_;
-            if (d < s0.first())
+            station st;
+            st.distance = m*spacing_;
+            if (st.distance < sFirst)
             {
                 continue;
             }
-            while (k + 2 < face.size() && s0[k + 1] <= d)
-            {
-                ++k;
-            }
-            const label a = face[k], b = face[min(k + 1, face.size() - 1)];
-            const scalar sa = s0[k], sb = s0[min(k + 1, face.size() - 1)];
-            if (sb - sa > 2*ds)
+            if
+            (
+                !structure.geometry().straddle
+                (
+                    face, p.end, p.axis, st.distance, st.a, st.b, st.weight
+                )
+            )
             {
                 FatalIOErrorInFunction(p.dict)
                     << "Panel " << p.name << ": the face of region "
-                    << p.region << " has a gap of " << sb - sa
-                    << " m at " << d << " m from " << p.end
-                    << " (more than two spacings): not a panel"
+                    << p.region << " has a gap of more than two spacings at "
+                    << st.distance << " m from " << p.end << ": not a panel"
                     << exit(FatalIOError);
             }
-            station st;
-            st.distance = d;
-            st.a = a;
-            st.b = b;
-            st.weight = (sb > sa) ? min(max((d - sa)/(sb - sa), 0), 1) : 0;
             st.location =
-                (1 - st.weight)*X[a] + st.weight*X[b] + (0.5*ds)*p.normal;
+                (1 - st.weight)*X[st.a] + st.weight*X[st.b]
+              + (0.5*ds)*p.normal;
             stations.append(st);
         }
         if (stations.empty())
@@ -104,14 +105,14 @@ void Foam::functionObjects::panelProfiles::locate()
             FatalIOErrorInFunction(p.dict)
                 << "Panel " << p.name << ": no station at a multiple of "
                 << spacing_ << " m within the face of region " << p.region
-                << " (" << s0.first() << " to " << s0.last() << " m from "
+                << " (" << sFirst << " to " << sLast << " m from "
                 << p.end << "): a smaller spacing" << exit(FatalIOError);
         }
         p.stations.transfer(stations);
 
         // The reference of the deflection: the clamped particle nearest
-        // the end (the body), else the face's first particle
-        p.origin = face.first();
+        // the end (the body), else the face's particle nearest it
+        p.origin = first;
         scalar nearest = GREAT;
         forAll(clamped, i)
         {

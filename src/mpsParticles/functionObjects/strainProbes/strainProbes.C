@@ -46,30 +46,20 @@ void Foam::functionObjects::strainProbes::locate()
             structure.geometry().surfaceLayer(panel, g.normal)
         );
 
-        // the nearest face particles below and above the distance
-        scalar below = -GREAT, above = GREAT;
-        for (const label k : face)
-        {
-            const scalar sk = ((X[k] - g.end) & g.axis) - g.distance;
-            if (sk <= 0 && sk > below)
-            {
-                below = sk;
-                g.a = k;
-            }
-            if (sk > 0 && sk < above)
-            {
-                above = sk;
-                g.b = k;
-            }
-        }
-        if (g.a < 0 && g.b < 0)
+        if (face.empty())
         {
             FatalIOErrorInFunction(g.dict)
                 << "Gauge " << g.name << ": region " << g.region
                 << " has no particles on the face with outward normal "
                 << g.normal << exit(FatalIOError);
         }
-        if (g.a < 0 || g.b < 0 || above - below > 2*ds)
+        if
+        (
+            !structure.geometry().straddle
+            (
+                face, g.end, g.axis, g.distance, g.a, g.b, g.weight
+            )
+        )
         {
             FatalIOErrorInFunction(g.dict)
                 << "Gauge " << g.name << " at " << g.distance
@@ -77,7 +67,6 @@ void Foam::functionObjects::strainProbes::locate()
                 << g.region << " (or across a gap in its face)"
                 << exit(FatalIOError);
         }
-        g.weight = -below/(above - below);
         g.location =
             (1 - g.weight)*X[g.a] + g.weight*X[g.b] + (0.5*ds)*g.normal;
     }

@@ -104,4 +104,40 @@ Foam::vector2D Foam::structureGeometry::axis
 }
 
 
+bool Foam::structureGeometry::straddle
+(
+    const labelList& face,
+    const vector2D& end,
+    const vector2D& axis,
+    const scalar d,
+    label& a,
+    label& b,
+    scalar& weight
+) const
+{
+    a = b = -1;
+    scalar below = -GREAT, above = GREAT;
+    for (const label k : face)
+    {
+        const scalar sk = ((X_[k] - end) & axis) - d;
+        if (sk <= 0 && sk > below)
+        {
+            below = sk;
+            a = k;
+        }
+        if (sk > 0 && sk < above)
+        {
+            above = sk;
+            b = k;
+        }
+    }
+    if (a < 0 || b < 0 || above - below > 2*ds_)
+    {
+        return false;
+    }
+    weight = -below/(above - below);
+    return true;
+}
+
+
 // ************************************************************************* //
