@@ -69,28 +69,5 @@ do for [t in times] {
 }
 unset multiplot
 
-# Strain and deflection along the panels (panelProfiles: every 10 mm from
-# the keel) at 0, 10, 20 and 26 ms, the times of the paper's Fig. 6: the
-# strain on the wet faces, the panels' deflection (positive: pushed in by
-# the water) as the deformed shape, drawn in mm
-reset
-set terminal pngcairo size 900,900 font ",11"
-set output "profiles.png"
-set multiplot layout 2,1 title "Along the panels from the keel (solid: right, dashed: left)"
-set grid
-set key top right
-set xlabel "distance from the keel [mm]"
-set xrange [0:300]
-profileTimes = "0 0.01 0.02 0.026"
-at(panel, q, t) = sprintf("< panelProfileAt %s %s %s", panel, q, t)
-set ylabel "wet-face strain [microstrain]"
-plot for [i = 1:words(profileTimes)] at("right", "strain", word(profileTimes, i)) \
-        u (1e3*$1):(1e6*$2) w lp pt 7 ps 0.5 lw 1.5 lc i t sprintf("%g ms", 1e3*word(profileTimes, i)), \
-     for [i = 1:words(profileTimes)] at("left", "strain", word(profileTimes, i)) \
-        u (1e3*$1):(1e6*$2) w l dt 2 lw 1 lc i notitle
-set ylabel "deflection [mm]"
-plot for [i = 1:words(profileTimes)] at("right", "deflection", word(profileTimes, i)) \
-        u (1e3*$1):(1e3*$2) w lp pt 7 ps 0.5 lw 1.5 lc i t sprintf("%g ms", 1e3*word(profileTimes, i)), \
-     for [i = 1:words(profileTimes)] at("left", "deflection", word(profileTimes, i)) \
-        u (1e3*$1):(1e3*$2) w l dt 2 lw 1 lc i notitle
-unset multiplot
+# Strain and deflection along the panels at 0, 10, 20 and 26 ms, the times
+# of the paper's Fig. 6: profiles.png, drawn by bin/plotPanelProfiles
