@@ -54,10 +54,10 @@ plot for [t in "0.005 0.01 0.015"] "postProcessing/wallPressure/".t."/wallPressu
 # of the way to the chine (grey), and their mean over bins of 0.05 in
 # |x|/c (bin/wedgePressureSimilarity). Wagner's outer solution
 #   Cp = 2 (cdot/V)/sqrt(1 - xi^2) - xi^2/(1 - xi^2), xi = x/c,
-# up to the spray-root peak (cdot/V)^2 (7.40 at 30 deg); Zhao & Faltinsen's
-# (1993) similarity solution peaks lower (6.93 at 30 deg, recalled from
-# their table, not recomputed here) and its root
-# lies nearer the keel.
+# up to the spray-root peak (cdot/V)^2 (7.40 at 30 deg); the exact
+# similarity solution (data/wedgeSimilarity/profile_<deadrise>.dat, by the
+# utility wedgeSimilarity, at 10, 20, 30 and 45 deg) peaks lower (6.89 at
+# 30 deg) and nearer the keel.
 k = cdot/V
 CpW(xi) = abs(xi) >= 1 ? 1/0 : \
     ((2*k/sqrt(1 - xi**2) - xi**2/(1 - xi**2)) > k**2 ? k**2 : \
@@ -66,10 +66,13 @@ set output "pressureSimilarity.png"
 set title sprintf("Wall pressure in similarity variables (deadrise %g deg, V = 4 m/s)", deadrise)
 set xlabel "|x - x_{keel}| / c(t),  c = ({/Symbol p}/2) V t / tan {/Symbol b}"
 set ylabel "C_p = p / ({/Symbol r} V^2/2)"
+simFile = sprintf("data/wedgeSimilarity/profile_%g.dat", deadrise)
+hasSim = system("test -f ".simFile." && echo 1 || echo 0") + 0
 set xrange [0:2]
-set yrange [-2:25]
+set yrange [-2:(k**2 > 20 ? 1.25*k**2 : 25)]
 set key top right
 plot "postProcessing/wallPressure/wallPressureSimilarity.dat" u (abs($1)):2 w p pt 7 ps 0.3 lc rgb "#c0c0c0" t "wall particles, 4 ms to 0.9 t_{chine}", \
      "postProcessing/wallPressure/pressureSimilarity.dat" u 1:2:3 w yerrorlines pt 7 ps 0.8 lw 1.5 lc rgb "#1f77b4" t "mpsFsiFoam, bin mean +- std. dev.", \
      CpW(x) w l lw 2 dt 2 lc rgb "black" t "Wagner (outer solution, capped at its peak)", \
-     (deadrise == 30 ? 6.93 : 1/0) w l lw 1.5 dt 3 lc rgb "#d62728" t "Zhao and Faltinsen peak, 30 deg"
+     (hasSim ? simFile : "/dev/null") index 0 u ($1/k):3 w l lw 2 lc rgb "#d62728" \
+         t "similarity solution (Dobrovol'skaya 1969; wedgeSimilarity)"
