@@ -492,6 +492,107 @@ TEST_CASE("viscous term is exact for a quadratic velocity field on a lattice")
 }
 
 
+TEST_CASE("the fluid step's fused row sums: number density and surface as the models' own passes")
+{
+    // The fluid step sums each row's number density and asymmetry vector
+    // while it weighs the pairs; the free-surface models otherwise sum
+    // them in passes of their own. On a jittered tank (water 30 x 12 rows,
+    // wall + 2 dummy layers, the polynomial kernel at 3.1 l0) both give the
+    // same number densities (the row's sum in the same order: to the
+    // kernel's row evaluation, 1e-12) and the same flags, particle for
+    // particle, for each model that reads the vector
+    const scalar l0 = 0.01;
+    Random rnd(11);
+    mpsCloud c;
+    const label r = c.addRegion("tank");
+    for (label j = 0; j < 12; ++j)
+    {
+        for (label i = 0; i < 30; ++i)
+        {
+            const vector2D jitter
+            (
+                rnd.sample01<scalar>() - 0.5, rnd.sample01<scalar>() - 0.5
+            );
+            c.append
+            (
+                l0*(vector2D(i + 0.5, j + 0.5) + 0.2*jitter),
+                particleKind::fluid, r, l0
+            );
+        }
+    }
+    for (label k = 0; k < 3; ++k)
+    {
+        const particleKind kind =
+            k == 0 ? particleKind::wall : particleKind::dummy;
+        for (label i = -k - 1; i < 30 + k + 1; ++i)
+        {
+            c.append(l0*vector2D(i + 0.5, -k - 0.5), kind, r, l0);
+        }
+        for (label j = -k; j < 16; ++j)
+        {
+            c.append(l0*vector2D(-k - 0.5, j + 0.5), kind, r, l0);
+            c.append(l0*vector2D(30 + k + 0.5, j + 0.5), kind, r, l0);
+        }
+    }
+
+    for
+    (
+        const word model
+      : {"neighbourAsymmetry", "improved", "improved; wallRadius 2.1"}
+    )
+    {
+        INFO("freeSurface " << model);
+        const dictionary d(test::dict
+        (
+            "rho 1000; nu 1e-6; g (0 -9.81 0); l0 0.01;"
+            " kernel { type polynomial; }"
+            " re { numberDensity 3.1; gradient 3.1; laplacian 3.1;"
+            " viscosity 3.1; }"
+            " freeSurface { type " + model + "; } collision { type none; }"
+            " pressureSolver { type PCG; }"
+        ));
+        mpsFluid fluid(c, d, boundBox(point(-1, -1, -1), point(1, 1, 1)));
+        fluid.evaluate();
+        const List<scalar> nFused(c.n());
+        const List<bool> sFused(c.surface());
+
+        // The models' own passes over a full search's lists
+        autoPtr<mpsKernel> k(mpsKernel::New(d, 3.1*l0));
+        const neighbourList nbrs(c.x(), 3.1*l0);
+        const List<scalar> w(pairWeights(c, nbrs, k()));
+        scalar nErr = 0;
+        forAll(nFused, i)
+        {
+            nErr = max(nErr, mag(nFused[i] - c.n()[i]));
+        }
+        CHECK(nErr < 1e-12*k->latticeNumberDensity(l0));
+        // (the models read the fused sums' n, as the step does)
+        forAll(nFused, i)
+        {
+            c.n()[i] = nFused[i];
+        }
+
+        List<bool> s(c.size(), false);
+        freeSurfaceModel::New(d, l0)->identify
+        (
+            kernelPairs
+            {
+                c, nbrs, w, k(), k->latticeNumberDensity(l0), 0, 1e-3*l0
+            },
+            k->latticeSurfaceAsymmetry(l0), s
+        );
+        label nDiffer = 0, nSurface = 0;
+        forAll(s, i)
+        {
+            nDiffer += (s[i] != sFused[i]);
+            nSurface += (c.kind()[i] == particleKind::fluid && s[i]);
+        }
+        CHECK(nSurface >= 30);
+        CHECK(nDiffer == 0);
+    }
+}
+
+
 TEST_CASE("wall test radius: a thin film, the wet front behind its edge")
 {
     // A flat wall (wall + 3 dummy layers, 60 l0 long) under a water film

@@ -130,29 +130,73 @@ void Foam::mpsFluid::updateNeighbours()
         wL_.setSize(nPairs);
     }
 
+    rowSumN_.setSize(cloud_.size());
+    asymmetryN_.setSize(cloud_.size());
+    const UList<particleKind>& kind = cloud_.kind();
+
     // (dynamic: the structure's particles at the end have no pairs)
-    #pragma omp parallel for schedule(dynamic, 512)
-    for (label i = 0; i < cloud_.size(); ++i)
+    #pragma omp parallel
     {
-        // Distances first (in wN_), then the kernel over the row
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
+        // A row's separations x_i - x_j and distances, kept for the sums
+        std::vector<vector2D> d;
+        std::vector<scalar> r, a;
+
+        #pragma omp for schedule(dynamic, 512)
+        for (label i = 0; i < cloud_.size(); ++i)
         {
-            wN_[k] = max(mag(x[nbr[k]] - x[i]), minR_);
-        }
-        const label k0 = offsets[i], nk = offsets[i + 1] - k0;
-        for (label k = k0; k < k0 + nk; ++k)
-        {
-            const scalar r = wN_[k];
-            if (!sameG_)
+            const label k0 = offsets[i], nk = offsets[i + 1] - k0;
+            if (label(r.size()) < nk)
             {
-                wG_[k] = kG_->w(r);
+                d.resize(nk);
+                r.resize(nk);
+                a.resize(nk);
             }
-            if (!sameL_)
+            // Distances first (in wN_), then the kernel over the row
+            for (label l = 0; l < nk; ++l)
             {
-                wL_[k] = kL_->w(r);
+                d[l] = x[i] - x[nbr[k0 + l]];
+                r[l] = mag(d[l]);
+                wN_[k0 + l] = max(r[l], minR_);
             }
+            for (label k = k0; k < k0 + nk; ++k)
+            {
+                const scalar rk = wN_[k];
+                if (!sameG_)
+                {
+                    wG_[k] = kG_->w(rk);
+                }
+                if (!sameL_)
+                {
+                    wL_[k] = kL_->w(rk);
+                }
+            }
+            kN_->weights
+            (
+                wN_.cdata() + k0, nk, wN_.data() + k0, dwN_.data() + k0
+            );
+
+            // The number density and (fluid, walls) the asymmetry vector,
+            // each summed in the row's order, in one loop (their sums'
+            // chains of additions overlap)
+            const bool asymmetric =
+                kind[i] == particleKind::fluid || kind[i] == particleKind::wall;
+            for (label l = 0; l < nk; ++l)
+            {
+                a[l] = wN_[k0 + l]/max(r[l], SMALL);
+            }
+            scalar ni = 0;
+            vector2D F(Zero);
+            for (label l = 0; l < nk; ++l)
+            {
+                ni += wN_[k0 + l];
+                if (asymmetric && kind[nbr[k0 + l]] != particleKind::dummy)
+                {
+                    F += a[l]*d[l];
+                }
+            }
+            rowSumN_[i] = ni;
+            asymmetryN_[i] = F;
         }
-        kN_->weights(wN_.cdata() + k0, nk, wN_.data() + k0, dwN_.data() + k0);
     }
 }
 
@@ -160,17 +204,11 @@ void Foam::mpsFluid::updateNeighbours()
 void Foam::mpsFluid::updateNumberDensity()
 {
     UList<scalar>& n = cloud_.n();
-    const labelList& offsets = nbrs_.offsets();
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < cloud_.size(); ++i)
     {
-        scalar ni = 0;
-        for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-        {
-            ni += wN_[k];
-        }
-        n[i] = ni;
+        n[i] = rowSumN_[i];
     }
     syncHalos(n);
 }
@@ -320,7 +358,7 @@ Foam::mpsFluid::mpsFluid
     pairsN_
     {
         cloud_, nbrs_, wN_, kN_(), n0N_, kN_->latticeLambda(l0_), minR_,
-        &dwN_
+        &dwN_, &asymmetryN_
     },
     pairsG_
     {

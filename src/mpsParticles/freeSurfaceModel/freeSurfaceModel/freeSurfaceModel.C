@@ -68,10 +68,7 @@ void Foam::freeSurfaceModel::numberDensityTest
 
 void Foam::freeSurfaceModel::asymmetryTest
 (
-    const mpsCloud& cloud,
-    const neighbourList& nbrs,
-    const UList<scalar>& w,
-    const scalar n0,
+    const kernelPairs& pairs,
     const scalar F0,
     const scalar beta,
     const scalar asymmetry,
@@ -80,12 +77,17 @@ void Foam::freeSurfaceModel::asymmetryTest
     const bool wallNeighbourhood
 )
 {
+    const mpsCloud& cloud = pairs.cloud;
     const UList<vector2D>& x = cloud.x();
     const UList<scalar>& n = cloud.n();
     const UList<particleKind>& kinds = cloud.kind();
-    const labelList& offsets = nbrs.offsets();
-    const labelList& nbr = nbrs.neighbours();
+    const labelList& offsets = pairs.pairs.offsets();
+    const labelList& nbr = pairs.pairs.neighbours();
+    const UList<scalar>& w = pairs.w;
+    const scalar n0 = pairs.n0;
     const scalar limit = sqr(asymmetry*F0*n0/2);
+    const UList<vector2D>* given =
+        wallNeighbourhood ? nullptr : pairs.asymmetry;
 
     #pragma omp parallel for schedule(dynamic, 512)
     for (label i = 0; i < cloud.size(); ++i)
@@ -97,6 +99,11 @@ void Foam::freeSurfaceModel::asymmetryTest
         if (n[i] < beta*n0)
         {
             surface[i] = true;
+            continue;
+        }
+        if (given)
+        {
+            surface[i] = (magSqr((*given)[i]) > limit);
             continue;
         }
         bool wet = !wallNeighbourhood;

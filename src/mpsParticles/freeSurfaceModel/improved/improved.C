@@ -172,31 +172,24 @@ void Foam::freeSurfaceModels::improved::identify
 ) const
 {
     const mpsCloud& cloud = pairs.cloud;
-    const neighbourList& nbrs = pairs.pairs;
-    const UList<scalar>& w = pairs.w;
-    const scalar n0 = pairs.n0;
     surface = false;
-    asymmetryTest
-    (
-        cloud, nbrs, w, n0, F0, beta_, asymmetry_, particleKind::fluid, surface
-    );
+    asymmetryTest(pairs, F0, beta_, asymmetry_, particleKind::fluid, surface);
     if (wallTest_ == wallTestType::asymmetry)
     {
         asymmetryTest
         (
-            cloud, nbrs, w, n0, F0, beta_, asymmetry_, particleKind::wall,
-            surface, true
+            pairs, F0, beta_, asymmetry_, particleKind::wall, surface, true
         );
     }
     else if (wallKernel_.valid())
     {
-        wallNumberDensityTest(cloud, nbrs, surface);
+        wallNumberDensityTest(cloud, pairs.pairs, surface);
     }
     else
     {
         numberDensityTest
         (
-            cloud, wallBeta_, n0, particleKind::wall, surface
+            cloud, wallBeta_, pairs.n0, particleKind::wall, surface
         );
     }
 }

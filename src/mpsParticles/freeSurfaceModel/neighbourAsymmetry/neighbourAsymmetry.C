@@ -58,17 +58,10 @@ void Foam::freeSurfaceModels::neighbourAsymmetry::identify
     UList<bool>& surface
 ) const
 {
-    const mpsCloud& cloud = pairs.cloud;
-    const neighbourList& nbrs = pairs.pairs;
-    const UList<scalar>& w = pairs.w;
-    const scalar n0 = pairs.n0;
     surface = false;
     for (const particleKind k : {particleKind::fluid, particleKind::wall})
     {
-        asymmetryTest
-        (
-            cloud, nbrs, w, n0, F0, beta_, asymmetry_, k, surface
-        );
+        asymmetryTest(pairs, F0, beta_, asymmetry_, k, surface);
     }
 }
 
