@@ -417,10 +417,15 @@ void Foam::mpsFluid::viscousAcceleration
 
     acc.setSize(n);
 
+    const scalar reV2 = sqr(kV_->re());
+
     #pragma omp parallel
     {
-        // A row's weights at once (the kernel's vectorised values), then
-        // the sum in the row's order
+        // A row's pairs within the kernel's radius gathered (those beyond
+        // it weigh zero: leaving them out leaves the sum as it is), their
+        // weights at once (the kernel's vectorised values), then the sum in
+        // the row's order
+        std::vector<label> J;
         std::vector<scalar> w;
 
         #pragma omp for schedule(dynamic, 512)
@@ -433,15 +438,24 @@ void Foam::mpsFluid::viscousAcceleration
                 if (label(w.size()) < nk)
                 {
                     w.resize(nk);
+                    J.resize(nk);
                 }
-                for (label l = 0; l < nk; ++l)
+                label m = 0;
+                for (label k = k0; k < k0 + nk; ++k)
                 {
-                    w[l] = max(mag(x[nbr[k0 + l]] - x[i]), minR_);
+                    const label j = nbr[k];
+                    const scalar r2 = magSqr(x[j] - x[i]);
+                    if (r2 < reV2)
+                    {
+                        J[m] = j;
+                        w[m] = max(::sqrt(r2), minR_);
+                        ++m;
+                    }
                 }
-                kV_->values(w.data(), nk, w.data());
-                for (label l = 0; l < nk; ++l)
+                kV_->values(w.data(), m, w.data());
+                for (label l = 0; l < m; ++l)
                 {
-                    lapU += w[l]*(U[nbr[k0 + l]] - U[i]);
+                    lapU += w[l]*(U[J[l]] - U[i]);
                 }
             }
             acc[i] = coeff*lapU;

@@ -221,8 +221,8 @@ Foam::scalar Foam::particleShiftings::fickian::shift
     #pragma omp parallel reduction(max:largest)
     {
     // A row's pairs within the support, gathered (index, d, r^2), their
-    // kernel values computed in one vectorisable loop, then summed in the
-    // row's order
+    // kernel values and anti-clumping factors computed in vectorisable
+    // loops, then summed in the row's order
     std::vector<label> J;
     std::vector<scalar> dx, dy, rr, Wr, c;
 
@@ -271,6 +271,22 @@ Foam::scalar Foam::particleShiftings::fickian::shift
             {
                 kernel.evaluate(std::sqrt(rp[l]), Wp[l], cp[l]);
             }
+            // The anti-clumping factor 1 + R (W/W(l0))^n in place of W
+            if (wholeExponent_ == 4)
+            {
+                #pragma omp simd
+                for (label l = 0; l < m; ++l)
+                {
+                    Wp[l] = 1 + R_*antiClumping(Wp[l]*invWl0);
+                }
+            }
+            else
+            {
+                for (label l = 0; l < m; ++l)
+                {
+                    Wp[l] = 1 + R_*antiClumping(Wp[l]*invWl0);
+                }
+            }
         }
 
         // With d = x_j - x_i, grad_i W_ij = -W'(r) d/r points from i to j
@@ -286,7 +302,7 @@ Foam::scalar Foam::particleShiftings::fickian::shift
             const vector2D d(dx[l], dy[l]);
             const vector2D gW(c[l]*d);                  // V grad_i W_ij
             g += gW;
-            gradC += (1 + R_*antiClumping(Wr[l]*invWl0))*gW;
+            gradC += Wr[l]*gW;
             if (kind[j] == particleKind::fluid)
             {
                 Mf += gW*d;

@@ -74,6 +74,8 @@ Foam::pressureSolver::performance solveWith
 // iteration: q = A p with p.q; x, r, z = D^-1 r with r.r and r.z; p. The
 // sums run over fixed blocks of rows, each summed in order, the blocks'
 // sums then added in order: the same result on any number of threads.
+// The products' blocks go to the threads as each finishes one (the rows'
+// lengths differ), which leaves the sums as they are.
 Foam::pressureSolver::performance diagonalPCG
 (
     const Foam::ppeMatrix& A,
@@ -108,7 +110,7 @@ Foam::pressureSolver::performance diagonalPCG
 
     // Jacobi's inverse diagonal (1 where the diagonal is zero, as Eigen's),
     // r = b - A x
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(dynamic, 1)
     for (label blk = 0; blk < nBlocks; ++blk)
     {
         scalar rr = 0, bb = 0;
@@ -162,7 +164,7 @@ Foam::pressureSolver::performance diagonalPCG
 
         while (iter < maxIter)
         {
-            #pragma omp parallel for schedule(static)
+            #pragma omp parallel for schedule(dynamic, 1)
             for (label blk = 0; blk < nBlocks; ++blk)
             {
                 scalar pq = 0;
