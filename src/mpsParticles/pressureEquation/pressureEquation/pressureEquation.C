@@ -484,9 +484,9 @@ void Foam::pressureEquation::solve(const scalar dt)
     Eigen::VectorXd& sol = sol_;
     system(dt, A, b, sol);
 
-    // The relative residual of the last step's pressure (the log's initial
-    // residual; the solvers' final one is the same measure)
-    initialResidual_ = residual(A, b, sol);
+    // The initial guess kept for its residual, where the solver does not
+    // give it
+    guess_ = sol;
 
     const clockValue solveClock(true);
     performance_ =
@@ -494,6 +494,13 @@ void Foam::pressureEquation::solve(const scalar dt)
       ? solver_->solve(A, b, sol, rowStart_)
       : solver_->solve(A, b, sol);
     solveTime_ = solveClock.elapsed();
+
+    // The relative residual of the last step's pressure (the log's initial
+    // residual; the solvers' final one is the same measure)
+    initialResidual_ =
+        (performance_.initialResidual >= 0 && !cloud_.distribution())
+      ? performance_.initialResidual
+      : residual(A, b, guess_);
 
     // The solution to the particles (negative pressures clamped to zero
     // where clampNegative says so); zero rows keep p = 0

@@ -140,11 +140,13 @@ Foam::pressureSolver::performance diagonalPCG
     {
         x.setZero();
         perf.converged = true;
+        perf.initialResidual = 0;
         return perf;
     }
     const scalar threshold =
         std::max(Foam::sqr(tolerance)*bNorm2, std::numeric_limits<scalar>::min());
     scalar rNorm2 = total(sum1);
+    perf.initialResidual = std::sqrt(rNorm2/bNorm2);
 
     label iter = 0;
     if (rNorm2 >= threshold)
