@@ -229,17 +229,20 @@ void Foam::neighbourList::filter
         nExpected,
         [&](const label i, DynamicList<label>& nbrs)
         {
+            // Each candidate written, kept where it is close enough (no
+            // branch: a candidate near the radius is as likely in as out)
             const vector2D& xi = x[i];
+            label m = nbrs.size();
+            nbrs.setSize(m + offsets[i + 1] - offsets[i]);
             for (label k = offsets[i]; k < offsets[i + 1]; ++k)
             {
                 const label j = nbr[k];
                 const scalar dx = x[j].x() - xi.x();
                 const scalar dy = x[j].y() - xi.y();
-                if (dx*dx + dy*dy < r2)
-                {
-                    nbrs.append(j);
-                }
+                nbrs[m] = j;
+                m += (dx*dx + dy*dy < r2);
             }
+            nbrs.setSize(m);
         }
     );
 }
