@@ -120,7 +120,6 @@ void Foam::mpsFluid::updateNeighbours()
     const labelList& nbr = nbrs_.neighbours();
     const label nPairs = nbrs_.nPairs();
     wN_.setSize(nPairs);
-    dwN_.setSize(nPairs);
     if (!sameG_)
     {
         wG_.setSize(nPairs);
@@ -132,14 +131,18 @@ void Foam::mpsFluid::updateNeighbours()
 
     rowSumN_.setSize(cloud_.size());
     asymmetryN_.setSize(cloud_.size());
+    rateN_.setSize(cloud_.size());
+    rateU_.setSize(cloud_.size());
     const UList<particleKind>& kind = cloud_.kind();
+    const UList<vector2D>& U = cloud_.U();
 
     // (dynamic: the structure's particles at the end have no pairs)
     #pragma omp parallel
     {
-        // A row's separations x_i - x_j and distances, kept for the sums
+        // A row's separations x_i - x_j, distances and (dw/dr)/r, kept
+        // for the sums
         std::vector<vector2D> d;
-        std::vector<scalar> r, a;
+        std::vector<scalar> r, a, g;
 
         #pragma omp for schedule(dynamic, 512)
         for (label i = 0; i < cloud_.size(); ++i)
@@ -150,6 +153,7 @@ void Foam::mpsFluid::updateNeighbours()
                 d.resize(nk);
                 r.resize(nk);
                 a.resize(nk);
+                g.resize(nk);
             }
             // Distances first (in wN_), then the kernel over the row
             for (label l = 0; l < nk; ++l)
@@ -170,30 +174,35 @@ void Foam::mpsFluid::updateNeighbours()
                     wL_[k] = kL_->w(rk);
                 }
             }
-            kN_->weights
-            (
-                wN_.cdata() + k0, nk, wN_.data() + k0, dwN_.data() + k0
-            );
+            kN_->weights(wN_.cdata() + k0, nk, wN_.data() + k0, g.data());
 
-            // The number density and (fluid, walls) the asymmetry vector,
-            // each summed in the row's order, in one loop (their sums'
-            // chains of additions overlap)
-            const bool asymmetric =
+            // The number density and (fluid, walls) the asymmetry vector
+            // and the rate, each summed in the row's order, in one loop
+            // (their sums' chains of additions overlap)
+            const bool inPPE =
                 kind[i] == particleKind::fluid || kind[i] == particleKind::wall;
             for (label l = 0; l < nk; ++l)
             {
                 a[l] = wN_[k0 + l]/max(r[l], SMALL);
             }
-            scalar ni = 0;
+            scalar ni = 0, rate = 0;
             vector2D F(Zero);
             for (label l = 0; l < nk; ++l)
             {
                 ni += wN_[k0 + l];
-                if (asymmetric && kind[nbr[k0 + l]] != particleKind::dummy)
+                if (inPPE)
                 {
-                    F += a[l]*d[l];
+                    const label j = nbr[k0 + l];
+                    // (x_j - x_i = -d exactly)
+                    rate += g[l]*((U[j] - U[i]) & (-d[l]));
+                    if (kind[j] != particleKind::dummy)
+                    {
+                        F += a[l]*d[l];
+                    }
                 }
             }
+            rateN_[i] = rate;
+            rateU_[i] = U[i];
             rowSumN_[i] = ni;
             asymmetryN_[i] = F;
         }
@@ -211,6 +220,67 @@ void Foam::mpsFluid::updateNumberDensity()
         n[i] = rowSumN_[i];
     }
     syncHalos(n);
+}
+
+
+void Foam::mpsFluid::rateSums()
+{
+    const UList<vector2D>& U = cloud_.U();
+    bool same = (rateU_.size() == U.size());
+    if (same)
+    {
+        #pragma omp parallel for schedule(static) reduction(&&:same)
+        for (label i = 0; i < U.size(); ++i)
+        {
+            same = same && (rateU_[i] == U[i]);
+        }
+    }
+    if (same)
+    {
+        return;
+    }
+
+    // As updateNeighbours sums it
+    const UList<vector2D>& x = cloud_.x();
+    const UList<particleKind>& kind = cloud_.kind();
+    const labelList& offsets = nbrs_.offsets();
+    const labelList& nbr = nbrs_.neighbours();
+    rateN_.setSize(U.size());
+    rateU_ = U;
+
+    #pragma omp parallel
+    {
+        std::vector<vector2D> d;
+        std::vector<scalar> r, w, g;
+
+        #pragma omp for schedule(dynamic, 512)
+        for (label i = 0; i < U.size(); ++i)
+        {
+            scalar rate = 0;
+            if (kind[i] == particleKind::fluid || kind[i] == particleKind::wall)
+            {
+                const label k0 = offsets[i], nk = offsets[i + 1] - k0;
+                if (label(r.size()) < nk)
+                {
+                    d.resize(nk);
+                    r.resize(nk);
+                    w.resize(nk);
+                    g.resize(nk);
+                }
+                for (label l = 0; l < nk; ++l)
+                {
+                    d[l] = x[i] - x[nbr[k0 + l]];
+                    r[l] = max(mag(d[l]), minR_);
+                }
+                kN_->weights(r.data(), nk, w.data(), g.data());
+                for (label l = 0; l < nk; ++l)
+                {
+                    rate += g[l]*((U[nbr[k0 + l]] - U[i]) & (-d[l]));
+                }
+            }
+            rateN_[i] = rate;
+        }
+    }
 }
 
 
@@ -358,7 +428,7 @@ Foam::mpsFluid::mpsFluid
     pairsN_
     {
         cloud_, nbrs_, wN_, kN_(), n0N_, kN_->latticeLambda(l0_), minR_,
-        &dwN_, &asymmetryN_
+        &rateN_, &asymmetryN_
     },
     pairsG_
     {
@@ -386,6 +456,11 @@ Foam::mpsFluid::mpsFluid
     // When the cloud moves particles between ranks (before a write), the
     // pairs and gradients that fluidPressureAt reads follow them
     cloud_.onLocalise([this]() { rebuildPairs(); });
+
+    // The PPE's source reads the number density's rate: summed with the
+    // weights, again where the velocities changed since (a scheme that
+    // sets the walls' velocities between solves)
+    ppe_.beforeAssembly([this]() { rateSums(); });
 }
 
 

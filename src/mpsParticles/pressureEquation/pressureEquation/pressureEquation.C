@@ -452,6 +452,10 @@ const Foam::labelList& Foam::pressureEquation::system
     Eigen::VectorXd& sol
 )
 {
+    if (beforeAssembly_)
+    {
+        beforeAssembly_();
+    }
     const label nUnknowns = setUnknowns();
     A.resize(nUnknowns, nGlobalRows_);
     b.resize(nUnknowns);

@@ -146,26 +146,14 @@ Foam::scalar Foam::ppeSource::numberDensityRate
     const label i
 )
 {
-    if (!pairs.dwdrByR)
+    if (pairs.rate)
     {
-        return numberDensityRate
-        (
-            pairs.cloud, pairs.pairs, pairs.kernel, i, pairs.minR
-        );
+        return (*pairs.rate)[i];
     }
-    const UList<vector2D>& x = pairs.cloud.x();
-    const UList<vector2D>& U = pairs.cloud.U();
-    const labelList& offsets = pairs.pairs.offsets();
-    const labelList& nbr = pairs.pairs.neighbours();
-    const UList<scalar>& g = *pairs.dwdrByR;
-
-    scalar rate = 0;
-    for (label k = offsets[i]; k < offsets[i + 1]; ++k)
-    {
-        const label j = nbr[k];
-        rate += g[k]*((U[j] - U[i]) & (x[j] - x[i]));
-    }
-    return rate;
+    return numberDensityRate
+    (
+        pairs.cloud, pairs.pairs, pairs.kernel, i, pairs.minR
+    );
 }
 
 
