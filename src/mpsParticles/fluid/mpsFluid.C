@@ -110,12 +110,37 @@ Foam::label Foam::mpsFluid::nActive() const
 }
 
 
+Foam::label Foam::mpsFluid::separations
+(
+    const label i,
+    rowTerms& row
+) const
+{
+    const UList<vector2D>& x = cloud_.x();
+    const label k0 = nbrs_.offsets()[i];
+    const label nk = nbrs_.offsets()[i + 1] - k0;
+    const labelList& nbr = nbrs_.neighbours();
+    if (label(row.r.size()) < nk)
+    {
+        row.d.resize(nk);
+        row.r.resize(nk);
+        row.a.resize(nk);
+        row.g.resize(nk);
+    }
+    for (label l = 0; l < nk; ++l)
+    {
+        row.d[l] = x[i] - x[nbr[k0 + l]];
+        row.r[l] = mag(row.d[l]);
+    }
+    return nk;
+}
+
+
 void Foam::mpsFluid::updateNeighbours()
 {
     const scalar radius = max(kN_->re(), max(kG_->re(), kL_->re()));
     search_.find(cloud_.x(), nActive(), cloud_.revision(), radius, nbrs_);
 
-    const UList<vector2D>& x = cloud_.x();
     const labelList& offsets = nbrs_.offsets();
     const labelList& nbr = nbrs_.neighbours();
     const label nPairs = nbrs_.nPairs();
@@ -139,27 +164,20 @@ void Foam::mpsFluid::updateNeighbours()
     // (dynamic: the structure's particles at the end have no pairs)
     #pragma omp parallel
     {
-        // A row's separations x_i - x_j, distances and (dw/dr)/r, kept
-        // for the sums
-        std::vector<vector2D> d;
-        std::vector<scalar> r, a, g;
+        // A row's separations, distances and (dw/dr)/r, kept for the sums
+        rowTerms row;
+        const std::vector<vector2D>& d = row.d;
+        const std::vector<scalar>& r = row.r;
+        std::vector<scalar>& a = row.a;
+        std::vector<scalar>& g = row.g;
 
         #pragma omp for schedule(dynamic, 512)
         for (label i = 0; i < cloud_.size(); ++i)
         {
-            const label k0 = offsets[i], nk = offsets[i + 1] - k0;
-            if (label(r.size()) < nk)
-            {
-                d.resize(nk);
-                r.resize(nk);
-                a.resize(nk);
-                g.resize(nk);
-            }
+            const label k0 = offsets[i], nk = separations(i, row);
             // Distances first (in wN_), then the kernel over the row
             for (label l = 0; l < nk; ++l)
             {
-                d[l] = x[i] - x[nbr[k0 + l]];
-                r[l] = mag(d[l]);
                 wN_[k0 + l] = max(r[l], minR_);
             }
             for (label k = k0; k < k0 + nk; ++k)
@@ -241,17 +259,14 @@ void Foam::mpsFluid::rateSums()
     }
 
     // As updateNeighbours sums it
-    const UList<vector2D>& x = cloud_.x();
     const UList<particleKind>& kind = cloud_.kind();
-    const labelList& offsets = nbrs_.offsets();
     const labelList& nbr = nbrs_.neighbours();
     rateN_.setSize(U.size());
     rateU_ = U;
 
     #pragma omp parallel
     {
-        std::vector<vector2D> d;
-        std::vector<scalar> r, w, g;
+        rowTerms row;
 
         #pragma omp for schedule(dynamic, 512)
         for (label i = 0; i < U.size(); ++i)
@@ -259,23 +274,16 @@ void Foam::mpsFluid::rateSums()
             scalar rate = 0;
             if (kind[i] == particleKind::fluid || kind[i] == particleKind::wall)
             {
-                const label k0 = offsets[i], nk = offsets[i + 1] - k0;
-                if (label(r.size()) < nk)
-                {
-                    d.resize(nk);
-                    r.resize(nk);
-                    w.resize(nk);
-                    g.resize(nk);
-                }
+                const label k0 = nbrs_.offsets()[i];
+                const label nk = separations(i, row);
                 for (label l = 0; l < nk; ++l)
                 {
-                    d[l] = x[i] - x[nbr[k0 + l]];
-                    r[l] = max(mag(d[l]), minR_);
+                    row.a[l] = max(row.r[l], minR_);
                 }
-                kN_->weights(r.data(), nk, w.data(), g.data());
+                kN_->weights(row.a.data(), nk, row.a.data(), row.g.data());
                 for (label l = 0; l < nk; ++l)
                 {
-                    rate += g[l]*((U[nbr[k0 + l]] - U[i]) & (-d[l]));
+                    rate += row.g[l]*((U[nbr[k0 + l]] - U[i]) & (-row.d[l]));
                 }
             }
             rateN_[i] = rate;
