@@ -171,7 +171,7 @@ void Foam::mpsFluid::updateNeighbours()
         std::vector<scalar>& a = row.a;
         std::vector<scalar>& g = row.g;
 
-        #pragma omp for schedule(dynamic, 512)
+        #pragma omp for schedule(dynamic, 128)
         for (label i = 0; i < cloud_.size(); ++i)
         {
             const label k0 = offsets[i], nk = separations(i, row);
@@ -268,7 +268,7 @@ void Foam::mpsFluid::rateSums()
     {
         rowTerms row;
 
-        #pragma omp for schedule(dynamic, 512)
+        #pragma omp for schedule(dynamic, 128)
         for (label i = 0; i < U.size(); ++i)
         {
             scalar rate = 0;
@@ -511,7 +511,7 @@ void Foam::mpsFluid::viscousAcceleration
         std::vector<label> J;
         std::vector<scalar> w;
 
-        #pragma omp for schedule(dynamic, 512)
+        #pragma omp for schedule(dynamic, 128)
         for (label i = 0; i < n; ++i)
         {
             vector2D lapU(Zero);

@@ -84,63 +84,68 @@ void Foam::neighbourList::fill
     offsets_.setSize(nPoints + 1);
     offsets_[0] = 0;
 
-    const label nThreads = omp_get_max_threads();
-    if (buffers_.size() < nThreads)
+    // Blocks of points handed out to the threads as they finish (rows cost
+    // what their neighbours do: fluid inside, at the surface, walls), each
+    // filled into its own buffer, the blocks joined in order
+    const label blockSize = 1024;
+    const label nBlocks = (nPoints + blockSize - 1)/blockSize;
+    if (buffers_.size() < nBlocks)
     {
-        buffers_.setSize(nThreads);
+        buffers_.setSize(nBlocks);
     }
-    labelList blockStart(nThreads + 1);
+    labelList blockStart(nBlocks + 1);
 
-    #pragma omp parallel num_threads(nThreads)
+    #pragma omp parallel
     {
-        const label t = omp_get_thread_num();
-        const label nt = omp_get_num_threads();
-        const label first = (nPoints*t)/nt;
-        const label last = (nPoints*(t + 1))/nt;
-
-        // Work on a thread-local list (its size is written at every append:
-        // in buffers_ the lists of two threads would share a cache line)
-        DynamicList<label> nbrs;
-        nbrs.transfer(buffers_[t]);
-        nbrs.clear();
-        nbrs.reserve(nExpected*(last - first));
-
-        for (label i = first; i < last; ++i)
+        #pragma omp for schedule(dynamic, 1)
+        for (label b = 0; b < nBlocks; ++b)
         {
-            appendNeighbours(i, nbrs);
-            offsets_[i + 1] = nbrs.size();
+            const label first = b*blockSize;
+            const label last = min(first + blockSize, nPoints);
+
+            // Work on a local list (its size is written at every append:
+            // in buffers_ the lists of two threads would share a cache
+            // line)
+            DynamicList<label> nbrs;
+            nbrs.transfer(buffers_[b]);
+            nbrs.clear();
+            nbrs.reserve(nExpected*(last - first));
+            for (label i = first; i < last; ++i)
+            {
+                appendNeighbours(i, nbrs);
+                offsets_[i + 1] = nbrs.size();
+            }
+            buffers_[b].transfer(nbrs);
         }
 
-        const label nOwn = nbrs.size();
-        buffers_[t].transfer(nbrs);
-
-        #pragma omp barrier
         #pragma omp single
         {
             blockStart[0] = 0;
-            for (label b = 0; b < nt; ++b)
+            for (label b = 0; b < nBlocks; ++b)
             {
                 blockStart[b + 1] = blockStart[b] + buffers_[b].size();
             }
-            for (label b = nt; b < nThreads; ++b)
-            {
-                blockStart[b + 1] = blockStart[b];
-            }
-            neighbours_.setSize(blockStart[nThreads]);
+            neighbours_.setSize(blockStart[nBlocks]);
         }
 
-        // Shift this block's offsets and copy its neighbours in place
-        const label shift = blockStart[t];
-        for (label i = first; i < last; ++i)
+        // Shift each block's offsets and copy its neighbours in place
+        #pragma omp for schedule(dynamic, 1)
+        for (label b = 0; b < nBlocks; ++b)
         {
-            offsets_[i + 1] += shift;
+            const label first = b*blockSize;
+            const label last = min(first + blockSize, nPoints);
+            const label shift = blockStart[b];
+            for (label i = first; i < last; ++i)
+            {
+                offsets_[i + 1] += shift;
+            }
+            std::copy
+            (
+                buffers_[b].cbegin(),
+                buffers_[b].cend(),
+                neighbours_.begin() + shift
+            );
         }
-        std::copy
-        (
-            buffers_[t].cbegin(),
-            buffers_[t].cbegin() + nOwn,
-            neighbours_.begin() + shift
-        );
     }
 }
 

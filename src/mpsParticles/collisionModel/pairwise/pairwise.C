@@ -79,7 +79,7 @@ Foam::label Foam::collisionModels::pairwise::correct
     List<vector2D> dU(n, Zero);
     label nPairs = 0;
 
-    #pragma omp parallel for schedule(dynamic, 512) reduction(+:nPairs)
+    #pragma omp parallel for schedule(dynamic, 128) reduction(+:nPairs)
     for (label i = 0; i < n; ++i)
     {
         if (kind[i] != particleKind::fluid)

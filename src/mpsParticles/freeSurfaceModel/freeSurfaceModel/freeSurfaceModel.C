@@ -89,7 +89,7 @@ void Foam::freeSurfaceModel::asymmetryTest
     const UList<vector2D>* given =
         wallNeighbourhood ? nullptr : pairs.asymmetry;
 
-    #pragma omp parallel for schedule(dynamic, 512)
+    #pragma omp parallel for schedule(dynamic, 128)
     for (label i = 0; i < cloud.size(); ++i)
     {
         if (kinds[i] != kind)

@@ -226,7 +226,7 @@ Foam::scalar Foam::particleShiftings::fickian::shift
     std::vector<label> J;
     std::vector<scalar> dx, dy, rr, Wr, c;
 
-    #pragma omp for schedule(dynamic, 512)
+    #pragma omp for schedule(dynamic, 128)
     for (label i = 0; i < n; ++i)
     {
         if

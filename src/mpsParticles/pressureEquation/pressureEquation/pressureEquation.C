@@ -167,7 +167,7 @@ void Foam::pressureEquation::assemble
     ppeMatrix::StorageIndex* outer = A.outerIndexPtr();
     outer[0] = 0;
 
-    #pragma omp parallel for schedule(dynamic, 512)
+    #pragma omp parallel for schedule(dynamic, 128)
     for (label i = 0; i < nPart; ++i)
     {
         if (unknown_[i] < 0 || !owned(i))
@@ -195,7 +195,7 @@ void Foam::pressureEquation::assemble
     // A typical diagonal, for the zero rows
     const scalar surfaceDiag = lapCoeff*n0L;
 
-    #pragma omp parallel for schedule(dynamic, 512)
+    #pragma omp parallel for schedule(dynamic, 128)
     for (label i = 0; i < nPart; ++i)
     {
         if (unknown_[i] < 0 || !owned(i))

@@ -81,7 +81,7 @@ void Foam::pressureGradients::corrected::gradient
 
     grad.setSize(n);
 
-    #pragma omp parallel for schedule(dynamic, 512)
+    #pragma omp parallel for schedule(dynamic, 128)
     for (label i = 0; i < n; ++i)
     {
         grad[i] = Zero;

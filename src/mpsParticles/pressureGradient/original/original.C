@@ -56,7 +56,7 @@ void Foam::pressureGradients::original::gradient
 
     grad.setSize(n);
 
-    #pragma omp parallel for schedule(dynamic, 512)
+    #pragma omp parallel for schedule(dynamic, 128)
     for (label i = 0; i < n; ++i)
     {
         grad[i] =
