@@ -16,6 +16,8 @@ License
 #include "Random.H"
 #include "error.H"
 
+#include <string>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::structureTangent::influenceRadius
@@ -111,6 +113,101 @@ void Foam::structureTangent::colour(const scalar radius)
 }
 
 
+void Foam::structureTangent::findParts(const neighbourList& nbrs)
+{
+    // Union-find over the pairs of free particles
+    labelList root(X_.size());
+    forAll(root, i)
+    {
+        root[i] = i;
+    }
+    auto find = [&root](label i)
+    {
+        while (root[i] != i)
+        {
+            root[i] = root[root[i]];
+            i = root[i];
+        }
+        return i;
+    };
+    forAll(X_, i)
+    {
+        if (dof_[i] < 0)
+        {
+            continue;
+        }
+        for (const label j : nbrs[i])
+        {
+            if (dof_[j] >= 0)
+            {
+                const label a = find(i), b = find(j);
+                root[max(a, b)] = min(a, b);
+            }
+        }
+    }
+
+    // The parts in the order of their first particles, each in increasing
+    // order
+    labelList partOf(X_.size(), -1);
+    DynamicList<DynamicList<label>> parts;
+    forAll(X_, i)
+    {
+        if (dof_[i] < 0)
+        {
+            continue;
+        }
+        const label r = find(i);
+        if (partOf[r] < 0)
+        {
+            partOf[r] = parts.size();
+            parts.append(DynamicList<label>());
+        }
+        parts[partOf[r]].append(i);
+    }
+    parts_.setSize(parts.size());
+    partDof_.setSize(nDof_);
+    forAll(parts, p)
+    {
+        parts_[p] = parts[p];
+        forAll(parts_[p], k)
+        {
+            for (label a = 0; a < 3; ++a)
+            {
+                partDof_[dof_[parts_[p][k]] + a] = 3*k + a;
+            }
+        }
+    }
+}
+
+
+Eigen::SparseMatrix<double> Foam::structureTangent::block
+(
+    const Eigen::SparseMatrix<double>& M,
+    const label p
+) const
+{
+    // M has no entries between parts: a column of part p has its rows in
+    // p, in the same order
+    const labelList& part = parts_[p];
+    Eigen::SparseMatrix<double> B(3*part.size(), 3*part.size());
+    std::vector<Eigen::Triplet<double>> entries;
+    forAll(part, k)
+    {
+        for (label a = 0; a < 3; ++a)
+        {
+            const label g = dof_[part[k]] + a;
+            for (Eigen::SparseMatrix<double>::InnerIterator it(M, g); it; ++it)
+            {
+                entries.emplace_back(partDof_[it.row()], 3*k + a, it.value());
+            }
+        }
+    }
+    B.setFromTriplets(entries.begin(), entries.end());
+    B.makeCompressed();
+    return B;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::structureTangent::structureTangent
@@ -126,6 +223,8 @@ Foam::structureTangent::structureTangent
     ds_(spacing),
     colours_(),
     radius_(0),
+    parts_(),
+    partDof_(),
     K_(),
     ldlt_(),
     lu_(),
@@ -167,6 +266,10 @@ void Foam::structureTangent::build
 
     // Each particle's neighbours within the influence radius, itself too
     const neighbourList nbrs(X_, radius_);
+    if (first)
+    {
+        findParts(nbrs);
+    }
     labelList colourOf(n, -1);
     forAll(colours_, c)
     {
@@ -252,8 +355,8 @@ void Foam::structureTangent::build
     }
     K_.resize(nDof_, nDof_);
     K_.setFromTriplets(triplets.begin(), triplets.end());
-    ldlt_.reset();
-    lu_.reset();
+    ldlt_.clear();
+    lu_.clear();
 
     if (!first)
     {
@@ -330,25 +433,49 @@ void Foam::structureTangent::factorise
     Eigen::SparseMatrix<double> A((0.5*cK)*(K_ + Kt) + D);
     A.makeCompressed();
 
-    lu_.reset();
-    ldlt_.reset(new Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>());
-    ldlt_->compute(A);
-    if (ldlt_->info() == Eigen::Success)
+    // Each part's block on a thread: LDL^T, or LU of the unsymmetrised
+    // block where LDL^T meets a zero pivot
+    const label nParts = parts_.size();
+    ldlt_.clear();
+    ldlt_.resize(nParts);
+    lu_.clear();
+    lu_.resize(nParts);
+    labelList singular(nParts, 0);
+    std::vector<std::string> message(nParts);
+
+    #pragma omp parallel for schedule(dynamic, 1)
+    for (label p = 0; p < nParts; ++p)
     {
-        return;
+        ldlt_[p].reset(new Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>());
+        ldlt_[p]->compute(block(A, p));
+        if (ldlt_[p]->info() == Eigen::Success)
+        {
+            continue;
+        }
+        ldlt_[p].reset();
+        Eigen::SparseMatrix<double> B(cK*K_ + D);
+        B.makeCompressed();
+        const Eigen::SparseMatrix<double> Bp(block(B, p));
+        lu_[p].reset(new Eigen::SparseLU<Eigen::SparseMatrix<double>>());
+        lu_[p]->analyzePattern(Bp);
+        lu_[p]->factorize(Bp);
+        if (lu_[p]->info() != Eigen::Success)
+        {
+            singular[p] = 1;
+            message[p] = lu_[p]->lastErrorMessage();
+        }
     }
-    ldlt_.reset();
-    Eigen::SparseMatrix<double> B(cK*K_ + D);
-    B.makeCompressed();
-    lu_.reset(new Eigen::SparseLU<Eigen::SparseMatrix<double>>());
-    lu_->analyzePattern(B);
-    lu_->factorize(B);
-    if (lu_->info() != Eigen::Success)
+
+    forAll(singular, p)
     {
-        FatalErrorInFunction
-            << "The structure's implicit step matrix (" << nDof_
-            << " unknowns) is singular: "
-            << lu_->lastErrorMessage().c_str() << exit(FatalError);
+        if (singular[p])
+        {
+            FatalErrorInFunction
+                << "The structure's implicit step matrix (" << nDof_
+                << " unknowns, its part " << p << " of " << nParts << ": "
+                << 3*parts_[p].size() << ") is singular: "
+                << message[p].c_str() << exit(FatalError);
+        }
     }
 }
 
@@ -361,38 +488,40 @@ void Foam::structureTangent::solve
     scalarList& dtheta
 ) const
 {
-    Eigen::VectorXd b(nDof_);
-    forAll(X_, i)
-    {
-        if (dof_[i] >= 0)
-        {
-            b(dof_[i]) = rForce[i].x();
-            b(dof_[i] + 1) = rForce[i].y();
-            b(dof_[i] + 2) = rTorque[i];
-        }
-    }
-    Eigen::VectorXd s;
-    if (ldlt_)
-    {
-        s = ldlt_->solve(b);
-    }
-    else
-    {
-        s = lu_->solve(b);
-    }
     du.setSize(X_.size());
     dtheta.setSize(X_.size());
     forAll(X_, i)
     {
-        if (dof_[i] >= 0)
-        {
-            du[i] = vector2D(s(dof_[i]), s(dof_[i] + 1));
-            dtheta[i] = s(dof_[i] + 2);
-        }
-        else
+        if (dof_[i] < 0)
         {
             du[i] = Zero;
             dtheta[i] = 0;
+        }
+    }
+
+    // Each part on a thread
+    #pragma omp parallel for schedule(dynamic, 1)
+    for (label p = 0; p < label(parts_.size()); ++p)
+    {
+        const labelList& part = parts_[p];
+        Eigen::VectorXd b(3*part.size());
+        forAll(part, k)
+        {
+            const label i = part[k];
+            b(3*k) = rForce[i].x();
+            b(3*k + 1) = rForce[i].y();
+            b(3*k + 2) = rTorque[i];
+        }
+        const Eigen::VectorXd s
+        (
+            ldlt_[p] ? Eigen::VectorXd(ldlt_[p]->solve(b))
+          : Eigen::VectorXd(lu_[p]->solve(b))
+        );
+        forAll(part, k)
+        {
+            const label i = part[k];
+            du[i] = vector2D(s(3*k), s(3*k + 1));
+            dtheta[i] = s(3*k + 2);
         }
     }
 }
