@@ -419,22 +419,8 @@ void Foam::structureTangent::factorise
     const scalar I
 )
 {
-    Eigen::SparseMatrix<double> D(nDof_, nDof_);
-    std::vector<Eigen::Triplet<double>> diag;
-    diag.reserve(nDof_);
-    for (label k = 0; k < nDof_; k += 3)
-    {
-        diag.emplace_back(k, k, cM*m);
-        diag.emplace_back(k + 1, k + 1, cM*m);
-        diag.emplace_back(k + 2, k + 2, cM*I);
-    }
-    D.setFromTriplets(diag.begin(), diag.end());
-    const Eigen::SparseMatrix<double> Kt(K_.transpose());
-    Eigen::SparseMatrix<double> A((0.5*cK)*(K_ + Kt) + D);
-    A.makeCompressed();
-
-    // Each part's block on a thread: LDL^T, or LU of the unsymmetrised
-    // block where LDL^T meets a zero pivot
+    // Each part's block on a thread (K has no entries between parts):
+    // LDL^T, or LU of the unsymmetrised block where LDL^T meets a zero pivot
     const label nParts = parts_.size();
     ldlt_.clear();
     ldlt_.resize(nParts);
@@ -446,19 +432,34 @@ void Foam::structureTangent::factorise
     #pragma omp parallel for schedule(dynamic, 1)
     for (label p = 0; p < nParts; ++p)
     {
+        const label n = 3*parts_[p].size();
+        Eigen::SparseMatrix<double> D(n, n);
+        std::vector<Eigen::Triplet<double>> diag;
+        diag.reserve(n);
+        for (label k = 0; k < n; k += 3)
+        {
+            diag.emplace_back(k, k, cM*m);
+            diag.emplace_back(k + 1, k + 1, cM*m);
+            diag.emplace_back(k + 2, k + 2, cM*I);
+        }
+        D.setFromTriplets(diag.begin(), diag.end());
+        const Eigen::SparseMatrix<double> K(block(K_, p));
+        const Eigen::SparseMatrix<double> Kt(K.transpose());
+        Eigen::SparseMatrix<double> A((0.5*cK)*(K + Kt) + D);
+        A.makeCompressed();
+
         ldlt_[p].reset(new Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>());
-        ldlt_[p]->compute(block(A, p));
+        ldlt_[p]->compute(A);
         if (ldlt_[p]->info() == Eigen::Success)
         {
             continue;
         }
         ldlt_[p].reset();
-        Eigen::SparseMatrix<double> B(cK*K_ + D);
+        Eigen::SparseMatrix<double> B(cK*K + D);
         B.makeCompressed();
-        const Eigen::SparseMatrix<double> Bp(block(B, p));
         lu_[p].reset(new Eigen::SparseLU<Eigen::SparseMatrix<double>>());
-        lu_[p]->analyzePattern(Bp);
-        lu_[p]->factorize(Bp);
+        lu_[p]->analyzePattern(B);
+        lu_[p]->factorize(B);
         if (lu_[p]->info() != Eigen::Success)
         {
             singular[p] = 1;
