@@ -23,6 +23,8 @@ License
 #include "treeDataCell.H"
 
 #include <omp.h>
+#include <charconv>
+#include <locale>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -78,41 +80,134 @@ static fileName writeInto(const regIOobject& obj, const fileName& folder)
 }
 
 
+// Whether the stream writes numbers as printf's %g at its precision (no
+// format flags, no width, the C locale's point): std::to_chars then gives
+// the same bytes (C++17 defines its general format as printf's %g)
+static bool plainNumbers(const std::ostream& s)
+{
+    const std::ios::fmtflags f = s.flags();
+    const std::numpunct<char>& punct =
+        std::use_facet<std::numpunct<char>>(s.getloc());
+    return
+        !(
+            f
+          & (
+                std::ios::floatfield | std::ios::showpoint
+              | std::ios::showpos | std::ios::uppercase | std::ios::showbase
+            )
+        )
+     && (f & std::ios::basefield) == std::ios::dec
+     && s.width() == 0
+     && s.precision() > 0 && s.precision() <= 30
+     && punct.decimal_point() == '.' && punct.grouping().empty();
+}
+
+
+// Appends numbers to a text as a plain stream (plainNumbers) writes them,
+// by std::to_chars: some three times faster than std::ostream's <<
+class plainText
+{
+    std::string& text_;
+    const int precision_;
+
+public:
+
+    plainText(std::string& text, const int precision)
+    :
+        text_(text),
+        precision_(precision)
+    {}
+
+    plainText& operator<<(const char c)
+    {
+        text_ += c;
+        return *this;
+    }
+
+    plainText& operator<<(const double v)
+    {
+        char buf[64];
+        text_.append
+        (
+            buf,
+            std::to_chars
+            (
+                buf, buf + sizeof(buf), v, std::chars_format::general,
+                precision_
+            ).ptr
+        );
+        return *this;
+    }
+
+    template<class Int>
+    plainText& appendInteger(const Int v)
+    {
+        char buf[24];
+        text_.append(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);
+        return *this;
+    }
+
+    plainText& operator<<(const int v)
+    {
+        return appendInteger(v);
+    }
+
+    plainText& operator<<(const long v)
+    {
+        return appendInteger(v);
+    }
+};
+
+
 // One value as OSstream writes it (std::ostream's << at the stream's
-// precision; a vector as "(x y z)")
-template<class Type>
-static void formatValue(std::ostream& s, const Type& v)
+// precision; a vector as "(x y z)"), into a stream or a plainText
+template<class Sink, class Type>
+static void formatValue(Sink& s, const Type& v)
 {
     s << v;
 }
 
-static void formatValue(std::ostream& s, const vector& v)
+template<class Sink>
+static void formatValue(Sink& s, const vector& v)
 {
     s << '(' << v.x() << ' ' << v.y() << ' ' << v.z() << ')';
 }
 
 
 // Lines 0..n-1 of a list, formatted on the threads (each a block of them
-// into its own text, with the stream's precision and flags) and written in
+// into its own text, as the stream would format them) and written in
 // order: the same bytes as one thread writing them, in a fraction of the
 // time (a write of the wedge's clouds is some 400,000 numbers)
 template<class Line>
 static void writeLines(OSstream& os, const label n, const Line& line)
 {
     std::ostream& out = os.stdStream();
+    const bool plain = plainNumbers(out);
     std::vector<std::string> text(omp_get_max_threads());
 
     #pragma omp parallel num_threads(text.size())
     {
         const label t = omp_get_thread_num();
         const label nt = omp_get_num_threads();
-        std::ostringstream s;
-        s.copyfmt(out);
-        for (label i = n*t/nt; i < n*(t + 1)/nt; ++i)
+        const label first = n*t/nt, last = n*(t + 1)/nt;
+        if (plain)
         {
-            line(s, i);
+            plainText s(text[t], out.precision());
+            for (label i = first; i < last; ++i)
+            {
+                line(s, i);
+            }
         }
-        text[t] = s.str();
+        else
+        {
+            std::ostringstream s;
+            s.copyfmt(out);
+            for (label i = first; i < last; ++i)
+            {
+                line(s, i);
+            }
+            text[t] = s.str();
+        }
     }
     for (const std::string& t : text)
     {
@@ -147,7 +242,7 @@ static fileName writeFieldInto(const IOField<Type>& fld, const fileName& folder)
             (
                 os,
                 fld.size(),
-                [&fld](std::ostream& s, const label i)
+                [&fld](auto& s, const label i)
                 {
                     formatValue(s, fld[i]);
                     s << '\n';
@@ -282,7 +377,7 @@ Foam::fileName Foam::lagrangianCloudWriter::write
         (
             os,
             x.size(),
-            [&x, &c](std::ostream& s, const label i)
+            [&x, &c](auto& s, const label i)
             {
                 formatValue(s, x[i]);
                 s << ' ' << c[i] << '\n';
