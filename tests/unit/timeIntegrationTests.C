@@ -262,14 +262,18 @@ TEST_CASE("structureTangent: the colouring's tangent equals a column by column o
     // clamp: K^-1 (K e_j) = e_j, both by forward differences at 1e-7
     // spacings (each off by some 1e-7 of K) and through K's conditioning
     // (some 1e2 on this panel): measured 1.4e-5, bound 1e-4 (a column
-    // given to the wrong particle is O(1))
+    // given to the wrong particle is O(1)). Also on the panel twice, the
+    // copy ten lengths away: two parts, each one's block factorised and
+    // solved on its own, must give the same columns (a column put in the
+    // other part, or at the wrong place in its own, is O(1))
+    const label copies = GENERATE(1, 2);
     test::panel p(0.03, 0.003, 3, 3);
     autoPtr<structureModel> s
     (
         p.model("structureModel { type rotatingParticles; }" + grayPlate)
     );
-    const label n = s->size();
-    auto forces = [&]
+    const label n1 = s->size();
+    auto panelForces = [&]
     (
         const UList<vector2D>& x,
         const UList<scalar>& theta,
@@ -282,8 +286,8 @@ TEST_CASE("structureTangent: the colouring's tangent equals a column by column o
         s->x() = x;
         s->theta() = theta;
         s->evaluate();
-        F.setSize(n);
-        T.setSize(n);
+        F.setSize(n1);
+        T.setSize(n1);
         const scalar m = s->mass(), I = s->rotationalInertia();
         forAll(F, i)
         {
@@ -293,21 +297,61 @@ TEST_CASE("structureTangent: the colouring's tangent equals a column by column o
         s->x() = x0;
         s->theta() = t0;
     };
-    structureTangent tangent(s->X(), p.clamped, p.ds);
-    List<vector2D> x(s->X());
+
+    // The structure: the panel's particles, copy after copy
+    const label n = copies*n1;
+    const vector2D offset(0, 10*p.L);
+    List<vector2D> X(n);
+    List<bool> clamped(n);
+    forAll(X, k)
+    {
+        X[k] = s->X()[k % n1] + scalar(k/n1)*offset;
+        clamped[k] = p.clamped[k % n1];
+    }
+    auto forces = [&]
+    (
+        const UList<vector2D>& x,
+        const UList<scalar>& theta,
+        List<vector2D>& F,
+        scalarList& T
+    )
+    {
+        F.setSize(n);
+        T.setSize(n);
+        for (label c = 0; c < copies; ++c)
+        {
+            List<vector2D> xc(n1), Fc;
+            scalarList tc(n1), Tc;
+            forAll(xc, i)
+            {
+                xc[i] = x[c*n1 + i] - scalar(c)*offset;
+                tc[i] = theta[c*n1 + i];
+            }
+            panelForces(xc, tc, Fc, Tc);
+            forAll(Fc, i)
+            {
+                F[c*n1 + i] = Fc[i];
+                T[c*n1 + i] = Tc[i];
+            }
+        }
+    };
+    structureTangent tangent(X, clamped, p.ds);
+    List<vector2D> x(X);
     scalarList theta(n, Zero);
     // about a bent state (the tip 0.1 spacings down)
     forAll(x, i)
     {
-        if (!p.clamped[i])
+        if (!clamped[i])
         {
-            x[i].y() -= 0.1*p.ds*sqr(p.X[i].x()/p.L);
+            x[i].y() -= 0.1*p.ds*sqr(p.X[i % n1].x()/p.L);
         }
     }
     tangent.build(x, theta, forces);
     WARN(tangent.nColours() << " colours for " << tangent.size()
-        << " unknowns; " << tangent.nEvaluations() << " force evaluations");
-    CHECK(tangent.nColours() < n/2);
+        << " unknowns in " << tangent.nParts() << " parts; "
+        << tangent.nEvaluations() << " force evaluations");
+    CHECK(tangent.nColours() < n1/2);
+    CHECK(tangent.nParts() == copies);
 
     // Column by column: A = K (cM 0, cK 1), solve against K e_k
     tangent.factorise(0, 1, s->mass(), s->rotationalInertia());
@@ -319,7 +363,7 @@ TEST_CASE("structureTangent: the colouring's tangent equals a column by column o
     label checked = 0;
     forAll(x, j)
     {
-        if (p.clamped[j] || j % 5)
+        if (clamped[j] || j % 5)
         {
             continue;
         }

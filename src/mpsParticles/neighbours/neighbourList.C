@@ -14,7 +14,6 @@ License
 #include "neighbourList.H"
 #include "DynamicList.H"
 #include "mathematicalConstants.H"
-#include <omp.h>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
