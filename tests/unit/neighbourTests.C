@@ -4,12 +4,14 @@
     to, smaller and larger than the cell size, and for 1 and 2 threads; the
     search with a skin (neighbourSearch) against a full search while the
     points move: the same lists, candidates rebuilt only when a point has
-    moved far enough or the points change.
+    moved far enough or the points change; rowChunks hands every row to one
+    thread once.
 \*---------------------------------------------------------------------------*/
 
 #include <catch2/catch.hpp>
 #include "neighbourList.H"
 #include "neighbourSearch.H"
+#include "rowChunks.H"
 #include "Random.H"
 #include <omp.h>
 #include <algorithm>
@@ -188,4 +190,52 @@ TEST_CASE("a search with a skin finds the lists a full search finds")
     full.build(x, radius, nActive);
     CHECK(found.neighbours() == full.neighbours());
     CHECK(none.nBuilds() == 2);
+}
+
+
+TEST_CASE("rowChunks: every row once, each thread's rows one or two ranges")
+{
+    // Rows of equal cost on 1, 2 and 3 threads, a count that is no
+    // multiple of the chunk: each row taken by one thread, once; a thread
+    // takes its own range upwards and then the others' from their tops,
+    // so its rows form at most nThreads ranges (its own, and one a range it
+    // helped with; which thread takes which depends on their speeds)
+    const label chunk = 16;
+    for (const label n : {0, 5, 1000, 1003})
+    {
+        for (const int nThreads : {1, 2, 3})
+        {
+            CAPTURE(n, nThreads);
+            rowChunks rows(n, chunk);
+            List<label> taker(n, -1), times(n, 0);
+            #pragma omp parallel num_threads(nThreads)
+            rows.forEach([&](const label i)
+            {
+                #pragma omp atomic
+                ++times[i];
+                taker[i] = omp_get_thread_num();
+            });
+            label bad = 0;
+            for (label i = 0; i < n; ++i)
+            {
+                bad += (times[i] != 1);
+            }
+            CHECK(bad == 0);
+
+            // Ranges of each thread's rows
+            const label team = min(label(nThreads), label(omp_get_max_threads()));
+            List<label> ranges(nThreads, 0);
+            for (label i = 0; i < n; ++i)
+            {
+                if (i == 0 || taker[i] != taker[i - 1])
+                {
+                    ++ranges[taker[i]];
+                }
+            }
+            for (label t = 0; t < nThreads; ++t)
+            {
+                CHECK(ranges[t] <= team);
+            }
+        }
+    }
 }
