@@ -14,6 +14,7 @@ License
 #include "mpsFluid.H"
 #include "clockValue.H"
 #include "inputChecks.H"
+#include "rowChunks.H"
 
 #include <vector>
 
@@ -161,7 +162,7 @@ void Foam::mpsFluid::updateNeighbours()
     const UList<particleKind>& kind = cloud_.kind();
     const UList<vector2D>& U = cloud_.U();
 
-    // (dynamic: the structure's particles at the end have no pairs)
+    rowChunks rows(cloud_.size());
     #pragma omp parallel
     {
         // A row's separations, distances and (dw/dr)/r, kept for the sums
@@ -171,8 +172,7 @@ void Foam::mpsFluid::updateNeighbours()
         std::vector<scalar>& a = row.a;
         std::vector<scalar>& g = row.g;
 
-        #pragma omp for schedule(dynamic, 128)
-        for (label i = 0; i < cloud_.size(); ++i)
+        rows.forEach([&](const label i)
         {
             const label k0 = offsets[i], nk = separations(i, row);
             // Distances first (in wN_), then the kernel over the row
@@ -223,7 +223,7 @@ void Foam::mpsFluid::updateNeighbours()
             rateU_[i] = U[i];
             rowSumN_[i] = ni;
             asymmetryN_[i] = F;
-        }
+        });
     }
 }
 
@@ -264,12 +264,12 @@ void Foam::mpsFluid::rateSums()
     rateN_.setSize(U.size());
     rateU_ = U;
 
+    rowChunks rows(U.size());
     #pragma omp parallel
     {
         rowTerms row;
 
-        #pragma omp for schedule(dynamic, 128)
-        for (label i = 0; i < U.size(); ++i)
+        rows.forEach([&](const label i)
         {
             scalar rate = 0;
             if (kind[i] == particleKind::fluid || kind[i] == particleKind::wall)
@@ -287,7 +287,7 @@ void Foam::mpsFluid::rateSums()
                 }
             }
             rateN_[i] = rate;
-        }
+        });
     }
 }
 
@@ -502,6 +502,7 @@ void Foam::mpsFluid::viscousAcceleration
 
     const scalar reV2 = sqr(kV_->re());
 
+    rowChunks rows(n);
     #pragma omp parallel
     {
         // A row's pairs within the kernel's radius gathered (those beyond
@@ -511,8 +512,7 @@ void Foam::mpsFluid::viscousAcceleration
         std::vector<label> J;
         std::vector<scalar> w;
 
-        #pragma omp for schedule(dynamic, 128)
-        for (label i = 0; i < n; ++i)
+        rows.forEach([&](const label i)
         {
             vector2D lapU(Zero);
             if (kind[i] == particleKind::fluid && nu_ > 0)
@@ -542,7 +542,7 @@ void Foam::mpsFluid::viscousAcceleration
                 }
             }
             acc[i] = coeff*lapU;
-        }
+        });
     }
 }
 

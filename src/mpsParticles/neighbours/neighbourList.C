@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "neighbourList.H"
+#include "rowChunks.H"
 #include "DynamicList.H"
 #include "mathematicalConstants.H"
 
@@ -83,11 +84,15 @@ void Foam::neighbourList::fill
     offsets_.setSize(nPoints + 1);
     offsets_[0] = 0;
 
-    // Blocks of points handed out to the threads as they finish (rows cost
-    // what their neighbours do: fluid inside, at the surface, walls), each
-    // filled into its own buffer, the blocks joined in order
+    // Blocks of points, each filled into its own buffer, the blocks joined
+    // in order; each thread fills its own range of blocks first, the rows
+    // the fluid step's loops give it (rowChunks), then helps with the
+    // others' (rows cost what their neighbours do: fluid inside, at the
+    // surface, walls)
     const label blockSize = 1024;
-    const label nBlocks = (nPoints + blockSize - 1)/blockSize;
+    rowChunks blocks(nPoints, blockSize);
+    rowChunks joins(nPoints, blockSize);
+    const label nBlocks = blocks.nChunks();
     if (buffers_.size() < nBlocks)
     {
         buffers_.setSize(nBlocks);
@@ -96,15 +101,12 @@ void Foam::neighbourList::fill
 
     #pragma omp parallel
     {
-        #pragma omp for schedule(dynamic, 1)
-        for (label b = 0; b < nBlocks; ++b)
+        blocks.forEachChunk([&](const label first, const label last)
         {
-            const label first = b*blockSize;
-            const label last = min(first + blockSize, nPoints);
-
             // Work on a local list (its size is written at every append:
             // in buffers_ the lists of two threads would share a cache
             // line)
+            const label b = first/blockSize;
             DynamicList<label> nbrs;
             nbrs.transfer(buffers_[b]);
             nbrs.clear();
@@ -115,8 +117,9 @@ void Foam::neighbourList::fill
                 offsets_[i + 1] = nbrs.size();
             }
             buffers_[b].transfer(nbrs);
-        }
+        });
 
+        #pragma omp barrier
         #pragma omp single
         {
             blockStart[0] = 0;
@@ -128,11 +131,9 @@ void Foam::neighbourList::fill
         }
 
         // Shift each block's offsets and copy its neighbours in place
-        #pragma omp for schedule(dynamic, 1)
-        for (label b = 0; b < nBlocks; ++b)
+        joins.forEachChunk([&](const label first, const label last)
         {
-            const label first = b*blockSize;
-            const label last = min(first + blockSize, nPoints);
+            const label b = first/blockSize;
             const label shift = blockStart[b];
             for (label i = first; i < last; ++i)
             {
@@ -144,7 +145,7 @@ void Foam::neighbourList::fill
                 buffers_[b].cend(),
                 neighbours_.begin() + shift
             );
-        }
+        });
     }
 }
 

@@ -14,6 +14,7 @@ License
 #include "pairwise.H"
 #include "addToRunTimeSelectionTable.H"
 #include "inputChecks.H"
+#include "rowChunks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -79,12 +80,13 @@ Foam::label Foam::collisionModels::pairwise::correct
     List<vector2D> dU(n, Zero);
     label nPairs = 0;
 
-    #pragma omp parallel for schedule(dynamic, 128) reduction(+:nPairs)
-    for (label i = 0; i < n; ++i)
+    rowChunks rows(n);
+    #pragma omp parallel reduction(+:nPairs)
+    rows.forEach([&](const label i)
     {
         if (kind[i] != particleKind::fluid)
         {
-            continue;
+            return;
         }
         vector2D dUi(Zero);
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
@@ -112,7 +114,7 @@ Foam::label Foam::collisionModels::pairwise::correct
             }
         }
         dU[i] = dUi;
-    }
+    });
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)

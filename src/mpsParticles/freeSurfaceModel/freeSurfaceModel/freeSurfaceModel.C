@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "freeSurfaceModel.H"
+#include "rowChunks.H"
 #include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -89,22 +90,23 @@ void Foam::freeSurfaceModel::asymmetryTest
     const UList<vector2D>* given =
         wallNeighbourhood ? nullptr : pairs.asymmetry;
 
-    #pragma omp parallel for schedule(dynamic, 128)
-    for (label i = 0; i < cloud.size(); ++i)
+    rowChunks rows(cloud.size());
+    #pragma omp parallel
+    rows.forEach([&](const label i)
     {
         if (kinds[i] != kind)
         {
-            continue;
+            return;
         }
         if (n[i] < beta*n0)
         {
             surface[i] = true;
-            continue;
+            return;
         }
         if (given)
         {
             surface[i] = (magSqr((*given)[i]) > limit);
-            continue;
+            return;
         }
         bool wet = !wallNeighbourhood;
         vector2D F(Zero);
@@ -121,7 +123,7 @@ void Foam::freeSurfaceModel::asymmetryTest
         }
         // |(2/n0) F| > asymmetry F0
         surface[i] = !wet || (magSqr(F) > limit);
-    }
+    });
 }
 
 

@@ -14,6 +14,7 @@ License
 #include "fickian.H"
 #include "addToRunTimeSelectionTable.H"
 #include "inputChecks.H"
+#include "rowChunks.H"
 #include "tensor2D.H"
 #include "mathematicalConstants.H"
 
@@ -218,6 +219,7 @@ Foam::scalar Foam::particleShiftings::fickian::shift
     List<vector2D> dU(n, Zero);
     scalar largest = 0;
 
+    rowChunks rows(n);
     #pragma omp parallel reduction(max:largest)
     {
     // A row's pairs within the support, gathered (index, d, r^2), their
@@ -226,8 +228,7 @@ Foam::scalar Foam::particleShiftings::fickian::shift
     std::vector<label> J;
     std::vector<scalar> dx, dy, rr, Wr, c;
 
-    #pragma omp for schedule(dynamic, 128)
-    for (label i = 0; i < n; ++i)
+    rows.forEach([&](const label i)
     {
         if
         (
@@ -235,7 +236,7 @@ Foam::scalar Foam::particleShiftings::fickian::shift
          || (surface[i] && surface_ == surfaceType::fixed)
         )
         {
-            continue;
+            return;
         }
 
         const label k0 = offsets[i], nk = offsets[i + 1] - k0;
@@ -350,7 +351,7 @@ Foam::scalar Foam::particleShiftings::fickian::shift
             // grad U = Mf^-1 S (S_ab = sum V (grad_i W)_a (u_j - u_i)_b)
             dU[i] = dri & (inv(Mf) & S);
         }
-    }
+    });
     }
 
     #pragma omp parallel for schedule(static)

@@ -16,6 +16,7 @@ License
 #include "Map.H"
 #include "clockValue.H"
 #include "inputChecks.H"
+#include "rowChunks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -167,12 +168,13 @@ void Foam::pressureEquation::assemble
     ppeMatrix::StorageIndex* outer = A.outerIndexPtr();
     outer[0] = 0;
 
-    #pragma omp parallel for schedule(dynamic, 128)
-    for (label i = 0; i < nPart; ++i)
+    rowChunks rows(nPart);
+    #pragma omp parallel
+    rows.forEach([&](const label i)
     {
         if (unknown_[i] < 0 || !owned(i))
         {
-            continue;
+            return;
         }
         label nnz = 1;
         if (!zeroRow_[i])
@@ -183,7 +185,7 @@ void Foam::pressureEquation::assemble
             }
         }
         outer[unknown_[i] - rowStart_ + 1] = nnz;
-    }
+    });
     for (label row = 0; row < nUnknowns; ++row)
     {
         outer[row + 1] += outer[row];
@@ -195,12 +197,13 @@ void Foam::pressureEquation::assemble
     // A typical diagonal, for the zero rows
     const scalar surfaceDiag = lapCoeff*n0L;
 
-    #pragma omp parallel for schedule(dynamic, 128)
-    for (label i = 0; i < nPart; ++i)
+    rowChunks rowsFilled(nPart);
+    #pragma omp parallel
+    rowsFilled.forEach([&](const label i)
     {
         if (unknown_[i] < 0 || !owned(i))
         {
-            continue;
+            return;
         }
         const label row = unknown_[i] - rowStart_;
         const label start = outer[row];
@@ -210,7 +213,7 @@ void Foam::pressureEquation::assemble
             vals[start] = surfaceDiag;
             b[row] = 0;
             sol[row] = 0;
-            continue;
+            return;
         }
 
         scalar diag = 0;
@@ -265,7 +268,7 @@ void Foam::pressureEquation::assemble
             cols[l + 1] = c;
             vals[l + 1] = v;
         }
-    }
+    });
 }
 
 

@@ -14,6 +14,7 @@ License
 #include "corrected.H"
 #include "inputChecks.H"
 #include "addToRunTimeSelectionTable.H"
+#include "rowChunks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -81,13 +82,14 @@ void Foam::pressureGradients::corrected::gradient
 
     grad.setSize(n);
 
-    #pragma omp parallel for schedule(dynamic, 128)
-    for (label i = 0; i < n; ++i)
+    rowChunks rows(n);
+    #pragma omp parallel
+    rows.forEach([&](const label i)
     {
         grad[i] = Zero;
         if (kind[i] != particleKind::fluid)
         {
-            continue;
+            return;
         }
         const scalar pRef =
             particleReference_
@@ -126,7 +128,7 @@ void Foam::pressureGradients::corrected::gradient
         {
             grad[i] = minimumGradient(cloud, nbrs, w, n0, minR2, p, i);
         }
-    }
+    });
 }
 
 

@@ -14,6 +14,7 @@ License
 #include "original.H"
 #include "inputChecks.H"
 #include "addToRunTimeSelectionTable.H"
+#include "rowChunks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -56,14 +57,15 @@ void Foam::pressureGradients::original::gradient
 
     grad.setSize(n);
 
-    #pragma omp parallel for schedule(dynamic, 128)
-    for (label i = 0; i < n; ++i)
+    rowChunks rows(n);
+    #pragma omp parallel
+    rows.forEach([&](const label i)
     {
         grad[i] =
             kind[i] == particleKind::fluid
           ? minimumGradient(cloud, nbrs, w, n0, minR2, p, i)
           : vector2D::zero;
-    }
+    });
 }
 
 

@@ -16,6 +16,7 @@ License
 #include "Pstream.H"
 #include "addToRunTimeSelectionTable.H"
 #include "inputChecks.H"
+#include "rowChunks.H"
 #include <Eigen/IterativeLinearSolvers>
 #include <algorithm>
 #include <limits>
@@ -74,7 +75,8 @@ Foam::pressureSolver::performance solveWith
 // iteration: q = A p with p.q; x, r, z = D^-1 r with r.r and r.z; p. The
 // sums run over fixed blocks of rows, each summed in order, the blocks'
 // sums then added in order: the same result on any number of threads.
-// The products' blocks go to the threads as each finishes one (the rows'
+// The products' blocks go to the threads as rowChunks hands them out (each
+// thread its own range first, then the other's that it reaches: the rows'
 // lengths differ), which leaves the sums as they are.
 Foam::pressureSolver::performance diagonalPCG
 (
@@ -106,15 +108,30 @@ Foam::pressureSolver::performance diagonalPCG
         return t;
     };
 
+    // The products' blocks: each thread its own range of them first (the
+    // rows of the particles it takes in the fluid step's loops, as the
+    // static schedule's vector loops), then helps with the other's
+    auto forBlocks = [n](const auto& body)
+    {
+        Foam::rowChunks blocks(n, blockSize);
+        #pragma omp parallel
+        blocks.forEachChunk
+        (
+            [&body](const label first, const label last)
+            {
+                body(first/blockSize, first, last);
+            }
+        );
+    };
+
     std::vector<scalar> invD(n), r(n), z(n), p(n), q(n);
 
     // Jacobi's inverse diagonal (1 where the diagonal is zero, as Eigen's),
     // r = b - A x
-    #pragma omp parallel for schedule(dynamic, 1)
-    for (label blk = 0; blk < nBlocks; ++blk)
+    forBlocks([&](const label blk, const label first, const label last)
     {
         scalar rr = 0, bb = 0;
-        for (label i = blk*blockSize; i < std::min(n, (blk + 1)*blockSize); ++i)
+        for (label i = first; i < last; ++i)
         {
             scalar d = 0, Ax = 0;
             for (label k = outer[i]; k < outer[i + 1]; ++k)
@@ -132,7 +149,7 @@ Foam::pressureSolver::performance diagonalPCG
         }
         sum1[blk] = rr;
         sum2[blk] = bb;
-    }
+    });
 
     Foam::pressureSolver::performance perf;
     const scalar bNorm2 = total(sum2);
@@ -166,11 +183,10 @@ Foam::pressureSolver::performance diagonalPCG
 
         while (iter < maxIter)
         {
-            #pragma omp parallel for schedule(dynamic, 1)
-            for (label blk = 0; blk < nBlocks; ++blk)
+            forBlocks([&](const label blk, const label first, const label last)
             {
                 scalar pq = 0;
-                for (label i = blk*blockSize; i < std::min(n, (blk + 1)*blockSize); ++i)
+                for (label i = first; i < last; ++i)
                 {
                     scalar Ap = 0;
                     for (label k = outer[i]; k < outer[i + 1]; ++k)
@@ -181,7 +197,7 @@ Foam::pressureSolver::performance diagonalPCG
                     pq += p[i]*Ap;
                 }
                 sum1[blk] = pq;
-            }
+            });
             const scalar alpha = rz/total(sum1);
 
             #pragma omp parallel for schedule(static)
