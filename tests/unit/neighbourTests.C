@@ -193,7 +193,7 @@ TEST_CASE("a search with a skin finds the lists a full search finds")
 }
 
 
-TEST_CASE("rowChunks: every row once, each thread's rows one or two ranges")
+TEST_CASE("rowChunks: every row once, each thread's rows at most a range a thread")
 {
     // Rows of equal cost on 1, 2 and 3 threads, a count that is no
     // multiple of the chunk: each row taken by one thread, once; a thread
@@ -208,13 +208,18 @@ TEST_CASE("rowChunks: every row once, each thread's rows one or two ranges")
             CAPTURE(n, nThreads);
             rowChunks rows(n, chunk);
             List<label> taker(n, -1), times(n, 0);
+            label team = 1;
             #pragma omp parallel num_threads(nThreads)
-            rows.forEach([&](const label i)
             {
-                #pragma omp atomic
-                ++times[i];
-                taker[i] = omp_get_thread_num();
-            });
+                #pragma omp single
+                team = omp_get_num_threads();
+                rows.forEach([&](const label i)
+                {
+                    #pragma omp atomic
+                    ++times[i];
+                    taker[i] = omp_get_thread_num();
+                });
+            }
             label bad = 0;
             for (label i = 0; i < n; ++i)
             {
@@ -222,8 +227,7 @@ TEST_CASE("rowChunks: every row once, each thread's rows one or two ranges")
             }
             CHECK(bad == 0);
 
-            // Ranges of each thread's rows
-            const label team = min(label(nThreads), label(omp_get_max_threads()));
+            // Ranges of each thread's rows (the team as it ran)
             List<label> ranges(nThreads, 0);
             for (label i = 0; i < n; ++i)
             {
