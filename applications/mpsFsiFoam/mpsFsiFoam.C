@@ -60,6 +60,7 @@ Description
 #include "clockValue.H"
 #include "inputChecks.H"
 #include "IFstream.H"
+#include "wideVectors.H"
 #include <fenv.h>
 #include <cstring>
 #include <cerrno>
@@ -93,7 +94,11 @@ int main(int argc, char *argv[])
     fedisableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
     Info<< "Floating-point traps: off (every step is checked for values"
         << " that are not finite)" << nl
-        << "OpenMP threads: " << omp_get_max_threads() << nl << endl;
+        << "OpenMP threads: " << omp_get_max_threads() << nl
+        << "Vector loops: the shift's rows on "
+        << (wideVectors() ? "AVX-512" : "x86-64")
+        << " (MPSFSIFOAM_WIDE_VECTORS=0: x86-64's; the same numbers)" << nl
+        << endl;
 
     #include "createMesh.H"
     #include "createFields.H"

@@ -15,6 +15,7 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include "inputChecks.H"
 #include "rowChunks.H"
+#include "wideVectors.H"
 #include "tensor2D.H"
 #include "mathematicalConstants.H"
 
@@ -186,6 +187,188 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+MPS_ALWAYS_INLINE void Foam::particleShiftings::fickian::shiftRow
+(
+    const stepData& step,
+    const label i,
+    rowBuffers& buffers,
+    vector2D& dri,
+    vector2D& dUi,
+    scalar& largest
+) const
+{
+    const UList<vector2D>& x = step.x;
+    const UList<vector2D>& U = step.U;
+    const UList<particleKind>& kind = step.kind;
+    const UList<bool>& surface = step.surface;
+    const labelList& offsets = step.offsets;
+    const labelList& nbr = step.nbr;
+    const wendland& kernel = step.kernel;
+    const scalar invWl0 = step.invWl0;
+    const scalar re2 = step.re2;
+    const scalar minR2 = step.minR2;
+    const scalar maxShift = step.maxShift;
+    const scalar h = step.h;
+    const scalar dt = step.dt;
+    const scalar minEigenvalue = 0.05;
+    std::vector<label>& J = buffers.J;
+    std::vector<scalar>& dx = buffers.dx;
+    std::vector<scalar>& dy = buffers.dy;
+    std::vector<scalar>& rr = buffers.rr;
+    std::vector<scalar>& Wr = buffers.Wr;
+    std::vector<scalar>& c = buffers.c;
+
+    if
+    (
+        kind[i] != particleKind::fluid
+     || (surface[i] && surface_ == surfaceType::fixed)
+    )
+    {
+        return;
+    }
+
+    const label k0 = offsets[i], nk = offsets[i + 1] - k0;
+    if (label(J.size()) < nk)
+    {
+        for (auto* v : {&dx, &dy, &rr, &Wr, &c})
+        {
+            v->resize(nk);
+        }
+        J.resize(nk);
+    }
+    label m = 0;
+    for (label k = k0; k < k0 + nk; ++k)
+    {
+        const label j = nbr[k];
+        const vector2D d(x[j] - x[i]);
+        const scalar r2 = magSqr(d);
+        if (r2 >= minR2 && r2 < re2)
+        {
+            J[m] = j;
+            dx[m] = d.x();
+            dy[m] = d.y();
+            rr[m] = r2;
+            ++m;
+        }
+    }
+    {
+        const scalar* rp = rr.data();
+        scalar* Wp = Wr.data();
+        scalar* cp = c.data();
+        #pragma omp simd
+        for (label l = 0; l < m; ++l)
+        {
+            kernel.evaluate(std::sqrt(rp[l]), Wp[l], cp[l]);
+        }
+        // The anti-clumping factor 1 + R (W/W(l0))^n in place of W
+        if (wholeExponent_ == 4)
+        {
+            #pragma omp simd
+            for (label l = 0; l < m; ++l)
+            {
+                Wp[l] = 1 + R_*antiClumping(Wp[l]*invWl0);
+            }
+        }
+        else
+        {
+            for (label l = 0; l < m; ++l)
+            {
+                Wp[l] = 1 + R_*antiClumping(Wp[l]*invWl0);
+            }
+        }
+    }
+
+    // With d = x_j - x_i, grad_i W_ij = -W'(r) d/r points from i to j
+    // (W' < 0): grad C points into the fluid, where the neighbours
+    // are, and M = sum V grad_i W_ij d is symmetric positive definite
+    // (the identity on a full, regular neighbourhood)
+    vector2D gradC(Zero), g(Zero);
+    tensor2D Mf(Zero), Mw(Zero), S(Zero);
+    bool nearSurface = surface[i];
+    for (label l = 0; l < m; ++l)
+    {
+        const label j = J[l];
+        const vector2D d(dx[l], dy[l]);
+        const vector2D gW(c[l]*d);                  // V grad_i W_ij
+        g += gW;
+        gradC += Wr[l]*gW;
+        if (kind[j] == particleKind::fluid)
+        {
+            Mf += gW*d;
+            S += gW*(U[j] - U[i]);
+            nearSurface = nearSurface || surface[j];
+        }
+        else
+        {
+            Mw += gW*d;
+        }
+    }
+    // (M over all neighbours: the fluid's part and the walls')
+    const tensor2D M(Mf + Mw);
+
+    if (nearSurface)
+    {
+        // Outward normal from the renormalised concentration gradient
+        vector2D nHat
+        (
+            smallestEigenvalue(M) > minEigenvalue ? (inv(M) & g) : g
+        );
+        const scalar magN = mag(nHat);
+        if (magN > VSMALL)
+        {
+            nHat /= -magN;
+            gradC -= (gradC & nHat)*nHat;
+        }
+    }
+
+    const scalar D =
+        diffusion_ == diffusionType::velocity
+      ? A_*h*mag(U[i])*dt
+      : A_*sqr(h);
+    dri = -D*gradC;
+    const scalar magDr = mag(dri);
+    if (magDr > maxShift)
+    {
+        dri *= maxShift/magDr;
+    }
+    largest = max(largest, min(magDr, maxShift));
+
+    if (smallestEigenvalue(Mf) > minEigenvalue)
+    {
+        // grad U = Mf^-1 S (S_ab = sum V (grad_i W)_a (u_j - u_i)_b)
+        dUi = dri & (inv(Mf) & S);
+    }
+}
+
+
+MPS_WIDE_VECTORS void Foam::particleShiftings::fickian::shiftRowWide
+(
+    const stepData& step,
+    const label i,
+    rowBuffers& buffers,
+    vector2D& dri,
+    vector2D& dUi,
+    scalar& largest
+) const
+{
+    shiftRow(step, i, buffers, dri, dUi, largest);
+}
+
+
+void Foam::particleShiftings::fickian::shiftRowPlain
+(
+    const stepData& step,
+    const label i,
+    rowBuffers& buffers,
+    vector2D& dri,
+    vector2D& dUi,
+    scalar& largest
+) const
+{
+    shiftRow(step, i, buffers, dri, dUi, largest);
+}
+
+
 Foam::scalar Foam::particleShiftings::fickian::shift
 (
     mpsCloud& cloud,
@@ -197,161 +380,40 @@ Foam::scalar Foam::particleShiftings::fickian::shift
 {
     UList<vector2D>& x = cloud.x();
     UList<vector2D>& U = cloud.U();
-    const UList<particleKind>& kind = cloud.kind();
-    const UList<bool>& surface = cloud.surface();
-    const labelList& offsets = nbrs.offsets();
-    const labelList& nbr = nbrs.neighbours();
-    const label n = offsets.size() - 1;
+    const label n = nbrs.offsets().size() - 1;
 
-    const scalar V = sqr(l0), h = 0.5*re;
+    const scalar V = sqr(l0);
     const wendland kernel(re, V);
     scalar Wl0, unused;
     kernel.evaluate(l0, Wl0, unused);
-    const scalar invWl0 = 1/Wl0;
-    const scalar re2 = sqr(re), minR2 = sqr(1e-3*l0);
-    const scalar maxShift = maxShift_*l0;
-    // A renormalisation matrix is used where it is far from singular (it
-    // is the identity on a full neighbourhood, 0.09 in a quarter plane, 0
-    // with all neighbours on one line)
-    const scalar minEigenvalue = 0.05;
+    const stepData step
+    {
+        x, U, cloud.kind(), cloud.surface(), nbrs.offsets(), nbrs.neighbours(),
+        kernel, 1/Wl0, sqr(re), sqr(1e-3*l0), maxShift_*l0, 0.5*re, dt
+    };
 
     List<vector2D> dr(n, Zero);
     List<vector2D> dU(n, Zero);
     scalar largest = 0;
 
+    // Each row on the wider vectors where the processor has them (the
+    // same numbers: wideVectors.H)
+    const bool wide = wideVectors();
     rowChunks rows(n);
     #pragma omp parallel reduction(max:largest)
     {
-    // A row's pairs within the support, gathered (index, d, r^2), their
-    // kernel values and anti-clumping factors computed in vectorisable
-    // loops, then summed in the row's order
-    std::vector<label> J;
-    std::vector<scalar> dx, dy, rr, Wr, c;
-
-    rows.forEach([&](const label i)
-    {
-        if
-        (
-            kind[i] != particleKind::fluid
-         || (surface[i] && surface_ == surfaceType::fixed)
-        )
+        rowBuffers buffers;
+        rows.forEach([&](const label i)
         {
-            return;
-        }
-
-        const label k0 = offsets[i], nk = offsets[i + 1] - k0;
-        if (label(J.size()) < nk)
-        {
-            for (auto* v : {&dx, &dy, &rr, &Wr, &c})
+            if (wide)
             {
-                v->resize(nk);
-            }
-            J.resize(nk);
-        }
-        label m = 0;
-        for (label k = k0; k < k0 + nk; ++k)
-        {
-            const label j = nbr[k];
-            const vector2D d(x[j] - x[i]);
-            const scalar r2 = magSqr(d);
-            if (r2 >= minR2 && r2 < re2)
-            {
-                J[m] = j;
-                dx[m] = d.x();
-                dy[m] = d.y();
-                rr[m] = r2;
-                ++m;
-            }
-        }
-        {
-            const scalar* rp = rr.data();
-            scalar* Wp = Wr.data();
-            scalar* cp = c.data();
-            #pragma omp simd
-            for (label l = 0; l < m; ++l)
-            {
-                kernel.evaluate(std::sqrt(rp[l]), Wp[l], cp[l]);
-            }
-            // The anti-clumping factor 1 + R (W/W(l0))^n in place of W
-            if (wholeExponent_ == 4)
-            {
-                #pragma omp simd
-                for (label l = 0; l < m; ++l)
-                {
-                    Wp[l] = 1 + R_*antiClumping(Wp[l]*invWl0);
-                }
+                shiftRowWide(step, i, buffers, dr[i], dU[i], largest);
             }
             else
             {
-                for (label l = 0; l < m; ++l)
-                {
-                    Wp[l] = 1 + R_*antiClumping(Wp[l]*invWl0);
-                }
+                shiftRowPlain(step, i, buffers, dr[i], dU[i], largest);
             }
-        }
-
-        // With d = x_j - x_i, grad_i W_ij = -W'(r) d/r points from i to j
-        // (W' < 0): grad C points into the fluid, where the neighbours
-        // are, and M = sum V grad_i W_ij d is symmetric positive definite
-        // (the identity on a full, regular neighbourhood)
-        vector2D gradC(Zero), g(Zero);
-        tensor2D Mf(Zero), Mw(Zero), S(Zero);
-        bool nearSurface = surface[i];
-        for (label l = 0; l < m; ++l)
-        {
-            const label j = J[l];
-            const vector2D d(dx[l], dy[l]);
-            const vector2D gW(c[l]*d);                  // V grad_i W_ij
-            g += gW;
-            gradC += Wr[l]*gW;
-            if (kind[j] == particleKind::fluid)
-            {
-                Mf += gW*d;
-                S += gW*(U[j] - U[i]);
-                nearSurface = nearSurface || surface[j];
-            }
-            else
-            {
-                Mw += gW*d;
-            }
-        }
-        // (M over all neighbours: the fluid's part and the walls')
-        const tensor2D M(Mf + Mw);
-
-        if (nearSurface)
-        {
-            // Outward normal from the renormalised concentration gradient
-            vector2D nHat
-            (
-                smallestEigenvalue(M) > minEigenvalue ? (inv(M) & g) : g
-            );
-            const scalar magN = mag(nHat);
-            if (magN > VSMALL)
-            {
-                nHat /= -magN;
-                gradC -= (gradC & nHat)*nHat;
-            }
-        }
-
-        const scalar D =
-            diffusion_ == diffusionType::velocity
-          ? A_*h*mag(U[i])*dt
-          : A_*sqr(h);
-        vector2D dri(-D*gradC);
-        const scalar magDr = mag(dri);
-        if (magDr > maxShift)
-        {
-            dri *= maxShift/magDr;
-        }
-        dr[i] = dri;
-        largest = max(largest, min(magDr, maxShift));
-
-        if (smallestEigenvalue(Mf) > minEigenvalue)
-        {
-            // grad U = Mf^-1 S (S_ab = sum V (grad_i W)_a (u_j - u_i)_b)
-            dU[i] = dri & (inv(Mf) & S);
-        }
-    });
+        });
     }
 
     #pragma omp parallel for schedule(static)
