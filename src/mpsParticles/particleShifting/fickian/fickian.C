@@ -191,10 +191,7 @@ MPS_ALWAYS_INLINE void Foam::particleShiftings::fickian::shiftRow
 (
     const stepData& step,
     const label i,
-    rowBuffers& buffers,
-    vector2D& dri,
-    vector2D& dUi,
-    scalar& largest
+    rowBuffers& row
 ) const
 {
     const UList<vector2D>& x = step.x;
@@ -211,12 +208,12 @@ MPS_ALWAYS_INLINE void Foam::particleShiftings::fickian::shiftRow
     const scalar h = step.h;
     const scalar dt = step.dt;
     const scalar minEigenvalue = 0.05;
-    std::vector<label>& J = buffers.J;
-    std::vector<scalar>& dx = buffers.dx;
-    std::vector<scalar>& dy = buffers.dy;
-    std::vector<scalar>& rr = buffers.rr;
-    std::vector<scalar>& Wr = buffers.Wr;
-    std::vector<scalar>& c = buffers.c;
+    std::vector<label>& J = row.J;
+    std::vector<scalar>& dx = row.dx;
+    std::vector<scalar>& dy = row.dy;
+    std::vector<scalar>& rr = row.rr;
+    std::vector<scalar>& Wr = row.Wr;
+    std::vector<scalar>& c = row.c;
 
     if
     (
@@ -325,18 +322,19 @@ MPS_ALWAYS_INLINE void Foam::particleShiftings::fickian::shiftRow
         diffusion_ == diffusionType::velocity
       ? A_*h*mag(U[i])*dt
       : A_*sqr(h);
+    vector2D& dri = step.dr[i];
     dri = -D*gradC;
     const scalar magDr = mag(dri);
     if (magDr > maxShift)
     {
         dri *= maxShift/magDr;
     }
-    largest = max(largest, min(magDr, maxShift));
+    row.largest = max(row.largest, min(magDr, maxShift));
 
     if (smallestEigenvalue(Mf) > minEigenvalue)
     {
         // grad U = Mf^-1 S (S_ab = sum V (grad_i W)_a (u_j - u_i)_b)
-        dUi = dri & (inv(Mf) & S);
+        step.dU[i] = dri & (inv(Mf) & S);
     }
 }
 
@@ -345,13 +343,10 @@ MPS_WIDE_VECTORS void Foam::particleShiftings::fickian::shiftRowWide
 (
     const stepData& step,
     const label i,
-    rowBuffers& buffers,
-    vector2D& dri,
-    vector2D& dUi,
-    scalar& largest
+    rowBuffers& row
 ) const
 {
-    shiftRow(step, i, buffers, dri, dUi, largest);
+    shiftRow(step, i, row);
 }
 
 
@@ -359,13 +354,10 @@ void Foam::particleShiftings::fickian::shiftRowPlain
 (
     const stepData& step,
     const label i,
-    rowBuffers& buffers,
-    vector2D& dri,
-    vector2D& dUi,
-    scalar& largest
+    rowBuffers& row
 ) const
 {
-    shiftRow(step, i, buffers, dri, dUi, largest);
+    shiftRow(step, i, row);
 }
 
 
@@ -386,14 +378,14 @@ Foam::scalar Foam::particleShiftings::fickian::shift
     const wendland kernel(re, V);
     scalar Wl0, unused;
     kernel.evaluate(l0, Wl0, unused);
+    List<vector2D> dr(n, Zero);
+    List<vector2D> dU(n, Zero);
     const stepData step
     {
         x, U, cloud.kind(), cloud.surface(), nbrs.offsets(), nbrs.neighbours(),
-        kernel, 1/Wl0, sqr(re), sqr(1e-3*l0), maxShift_*l0, 0.5*re, dt
+        kernel, 1/Wl0, sqr(re), sqr(1e-3*l0), maxShift_*l0, 0.5*re, dt,
+        dr, dU
     };
-
-    List<vector2D> dr(n, Zero);
-    List<vector2D> dU(n, Zero);
     scalar largest = 0;
 
     // Each row on the wider vectors where the processor has them (the
@@ -402,18 +394,19 @@ Foam::scalar Foam::particleShiftings::fickian::shift
     rowChunks rows(n);
     #pragma omp parallel reduction(max:largest)
     {
-        rowBuffers buffers;
+        rowBuffers row;
         rows.forEach([&](const label i)
         {
             if (wide)
             {
-                shiftRowWide(step, i, buffers, dr[i], dU[i], largest);
+                shiftRowWide(step, i, row);
             }
             else
             {
-                shiftRowPlain(step, i, buffers, dr[i], dU[i], largest);
+                shiftRowPlain(step, i, row);
             }
         });
+        largest = max(largest, row.largest);
     }
 
     #pragma omp parallel for schedule(static)
