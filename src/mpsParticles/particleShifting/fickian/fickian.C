@@ -207,7 +207,13 @@ MPS_ALWAYS_INLINE void Foam::particleShiftings::fickian::shiftRow
     const scalar maxShift = step.maxShift;
     const scalar h = step.h;
     const scalar dt = step.dt;
+    // A renormalisation matrix is used where it is far from singular (it
+    // is the identity on a full neighbourhood, 0.09 in a quarter plane, 0
+    // with all neighbours on one line)
     const scalar minEigenvalue = 0.05;
+    // The row's pairs within the support, gathered (index, d, r^2), their
+    // kernel values and anti-clumping factors computed in vectorisable
+    // loops, then summed in the row's order
     std::vector<label>& J = row.J;
     std::vector<scalar>& dx = row.dx;
     std::vector<scalar>& dy = row.dy;
