@@ -15,6 +15,7 @@ License
 #include "clockValue.H"
 #include "inputChecks.H"
 #include "rowChunks.H"
+#include "wideVectors.H"
 
 #include <vector>
 
@@ -111,7 +112,7 @@ Foam::label Foam::mpsFluid::nActive() const
 }
 
 
-Foam::label Foam::mpsFluid::separations
+MPS_ALWAYS_INLINE Foam::label Foam::mpsFluid::separations
 (
     const label i,
     rowTerms& row
@@ -128,12 +129,105 @@ Foam::label Foam::mpsFluid::separations
         row.a.resize(nk);
         row.g.resize(nk);
     }
+    vector2D* d = row.d.data();
+    scalar* r = row.r.data();
     for (label l = 0; l < nk; ++l)
     {
-        row.d[l] = x[i] - x[nbr[k0 + l]];
-        row.r[l] = mag(row.d[l]);
+        d[l] = x[i] - x[nbr[k0 + l]];
+    }
+    // (the square roots apart, in vector registers: mag's, in its order)
+    #pragma omp simd
+    for (label l = 0; l < nk; ++l)
+    {
+        r[l] = ::sqrt(d[l].x()*d[l].x() + d[l].y()*d[l].y());
     }
     return nk;
+}
+
+
+MPS_ALWAYS_INLINE void Foam::mpsFluid::neighbourRow
+(
+    const label i,
+    rowTerms& row
+)
+{
+    const labelList& nbr = nbrs_.neighbours();
+    const UList<particleKind>& kind = cloud_.kind();
+    const UList<vector2D>& U = cloud_.U();
+
+    const label k0 = nbrs_.offsets()[i], nk = separations(i, row);
+    const vector2D* d = row.d.data();
+    const scalar* r = row.r.data();
+    scalar* a = row.a.data();
+    scalar* g = row.g.data();
+    scalar* wN = wN_.data() + k0;
+
+    // Distances first (in wN_), then the kernel over the row
+    for (label l = 0; l < nk; ++l)
+    {
+        wN[l] = max(r[l], minR_);
+    }
+    if (!sameG_ || !sameL_)
+    {
+        for (label l = 0; l < nk; ++l)
+        {
+            if (!sameG_)
+            {
+                wG_[k0 + l] = kG_->w(wN[l]);
+            }
+            if (!sameL_)
+            {
+                wL_[k0 + l] = kL_->w(wN[l]);
+            }
+        }
+    }
+    kN_->weights(wN, nk, wN, g);
+
+    // The number density and (fluid, walls) the asymmetry vector and the
+    // rate, each summed in the row's order, in one loop (their sums'
+    // chains of additions overlap)
+    const bool inPPE =
+        kind[i] == particleKind::fluid || kind[i] == particleKind::wall;
+    for (label l = 0; l < nk; ++l)
+    {
+        a[l] = wN[l]/max(r[l], SMALL);
+    }
+    scalar ni = 0, rate = 0;
+    vector2D F(Zero);
+    for (label l = 0; l < nk; ++l)
+    {
+        ni += wN[l];
+        if (inPPE)
+        {
+            const label j = nbr[k0 + l];
+            // (x_j - x_i = -d exactly)
+            rate += g[l]*((U[j] - U[i]) & (-d[l]));
+            if (kind[j] != particleKind::dummy)
+            {
+                F += a[l]*d[l];
+            }
+        }
+    }
+    rateN_[i] = rate;
+    rateU_[i] = U[i];
+    rowSumN_[i] = ni;
+    asymmetryN_[i] = F;
+}
+
+
+MPS_WIDE_VECTORS void Foam::mpsFluid::neighbourRowWide
+(
+    const label i,
+    rowTerms& row
+)
+{
+    neighbourRow(i, row);
+}
+
+
+void Foam::mpsFluid::neighbourRowPlain(const label i, rowTerms& row)
+{
+    neighbourRow(i, row);
 }
 
 
@@ -142,8 +236,6 @@ void Foam::mpsFluid::updateNeighbours()
     const scalar radius = max(kN_->re(), max(kG_->re(), kL_->re()));
     search_.find(cloud_.x(), nActive(), cloud_.revision(), radius, nbrs_);
 
-    const labelList& offsets = nbrs_.offsets();
-    const labelList& nbr = nbrs_.neighbours();
     const label nPairs = nbrs_.nPairs();
     wN_.setSize(nPairs);
     if (!sameG_)
@@ -159,70 +251,25 @@ void Foam::mpsFluid::updateNeighbours()
     asymmetryN_.setSize(cloud_.size());
     rateN_.setSize(cloud_.size());
     rateU_.setSize(cloud_.size());
-    const UList<particleKind>& kind = cloud_.kind();
-    const UList<vector2D>& U = cloud_.U();
 
+    // Each row on the AVX-512 path where the processor has it, else on
+    // the x86-64 one (bitwise the same numbers: wideVectors.H)
+    const bool wide = wideVectors();
     rowChunks rows(cloud_.size());
     #pragma omp parallel
     {
         // A row's separations, distances and (dw/dr)/r, kept for the sums
         rowTerms row;
-        const std::vector<vector2D>& d = row.d;
-        const std::vector<scalar>& r = row.r;
-        std::vector<scalar>& a = row.a;
-        std::vector<scalar>& g = row.g;
-
         rows.forEach([&](const label i)
         {
-            const label k0 = offsets[i], nk = separations(i, row);
-            // Distances first (in wN_), then the kernel over the row
-            for (label l = 0; l < nk; ++l)
+            if (wide)
             {
-                wN_[k0 + l] = max(r[l], minR_);
+                neighbourRowWide(i, row);
             }
-            for (label k = k0; k < k0 + nk; ++k)
+            else
             {
-                const scalar rk = wN_[k];
-                if (!sameG_)
-                {
-                    wG_[k] = kG_->w(rk);
-                }
-                if (!sameL_)
-                {
-                    wL_[k] = kL_->w(rk);
-                }
+                neighbourRowPlain(i, row);
             }
-            kN_->weights(wN_.cdata() + k0, nk, wN_.data() + k0, g.data());
-
-            // The number density and (fluid, walls) the asymmetry vector
-            // and the rate, each summed in the row's order, in one loop
-            // (their sums' chains of additions overlap)
-            const bool inPPE =
-                kind[i] == particleKind::fluid || kind[i] == particleKind::wall;
-            for (label l = 0; l < nk; ++l)
-            {
-                a[l] = wN_[k0 + l]/max(r[l], SMALL);
-            }
-            scalar ni = 0, rate = 0;
-            vector2D F(Zero);
-            for (label l = 0; l < nk; ++l)
-            {
-                ni += wN_[k0 + l];
-                if (inPPE)
-                {
-                    const label j = nbr[k0 + l];
-                    // (x_j - x_i = -d exactly)
-                    rate += g[l]*((U[j] - U[i]) & (-d[l]));
-                    if (kind[j] != particleKind::dummy)
-                    {
-                        F += a[l]*d[l];
-                    }
-                }
-            }
-            rateN_[i] = rate;
-            rateU_[i] = U[i];
-            rowSumN_[i] = ni;
-            asymmetryN_[i] = F;
         });
     }
 }
@@ -483,63 +530,106 @@ void Foam::mpsFluid::viscousAcceleration(List<vector2D>& acc)
 }
 
 
+MPS_ALWAYS_INLINE Foam::vector2D Foam::mpsFluid::viscousSum
+(
+    const neighbourList& pairs,
+    const label i,
+    rowTerms& row
+) const
+{
+    const UList<vector2D>& x = cloud_.x();
+    const UList<vector2D>& U = cloud_.U();
+    const label k0 = pairs.offsets()[i];
+    const label nk = pairs.offsets()[i + 1] - k0;
+    const label* nbr = pairs.neighbours().cdata() + k0;
+    const scalar reV2 = sqr(kV_->re());
+    if (label(row.J.size()) < nk)
+    {
+        row.J.resize(nk);
+        row.r.resize(nk);
+    }
+    label* J = row.J.data();
+    scalar* w = row.r.data();
+
+    // The pairs within the kernel's radius gathered (those beyond it weigh
+    // zero: leaving them out leaves the sum as it is), each candidate
+    // written and kept where it is close enough (no branch: one near the
+    // radius is as likely in as out), the square roots apart, in vector
+    // registers, the weights at once (the kernel's vectorised values),
+    // then the sum in the row's order
+    label m = 0;
+    for (label l = 0; l < nk; ++l)
+    {
+        const label j = nbr[l];
+        const scalar r2 = magSqr(x[j] - x[i]);
+        J[m] = j;
+        w[m] = r2;
+        m += (r2 < reV2);
+    }
+    #pragma omp simd
+    for (label l = 0; l < m; ++l)
+    {
+        w[l] = max(::sqrt(w[l]), minR_);
+    }
+    kV_->values(w, m, w);
+    vector2D lapU(Zero);
+    for (label l = 0; l < m; ++l)
+    {
+        lapU += w[l]*(U[J[l]] - U[i]);
+    }
+    return lapU;
+}
+
+
+MPS_WIDE_VECTORS Foam::vector2D Foam::mpsFluid::viscousSumWide
+(
+    const neighbourList& pairs,
+    const label i,
+    rowTerms& row
+) const
+{
+    return viscousSum(pairs, i, row);
+}
+
+
+Foam::vector2D Foam::mpsFluid::viscousSumPlain
+(
+    const neighbourList& pairs,
+    const label i,
+    rowTerms& row
+) const
+{
+    return viscousSum(pairs, i, row);
+}
+
+
 void Foam::mpsFluid::viscousAcceleration
 (
     const neighbourList& pairs,
     List<vector2D>& acc
 ) const
 {
-    const UList<vector2D>& x = cloud_.x();
-    const UList<vector2D>& U = cloud_.U();
     const UList<particleKind>& kind = cloud_.kind();
     const label n = cloud_.size();
-
-    const labelList& offsets = pairs.offsets();
-    const labelList& nbr = pairs.neighbours();
     const scalar coeff = nu_*2*2/(lambdaV_*n0V_);
-
     acc.setSize(n);
 
-    const scalar reV2 = sqr(kV_->re());
-
+    // (each row on the AVX-512 path where the processor has it: the same
+    // numbers, wideVectors.H)
+    const bool wide = wideVectors();
     rowChunks rows(n);
     #pragma omp parallel
     {
-        // A row's pairs within the kernel's radius gathered (those beyond
-        // it weigh zero: leaving them out leaves the sum as it is), their
-        // weights at once (the kernel's vectorised values), then the sum in
-        // the row's order
-        std::vector<label> J;
-        std::vector<scalar> w;
-
+        rowTerms row;
         rows.forEach([&](const label i)
         {
             vector2D lapU(Zero);
             if (kind[i] == particleKind::fluid && nu_ > 0)
             {
-                const label k0 = offsets[i], nk = offsets[i + 1] - k0;
-                if (label(w.size()) < nk)
-                {
-                    w.resize(nk);
-                    J.resize(nk);
-                }
-                label m = 0;
-                for (label k = k0; k < k0 + nk; ++k)
-                {
-                    const label j = nbr[k];
-                    const scalar r2 = magSqr(x[j] - x[i]);
-                    if (r2 < reV2)
-                    {
-                        J[m] = j;
-                        w[m] = max(::sqrt(r2), minR_);
-                        ++m;
-                    }
-                }
-                kV_->values(w.data(), m, w.data());
-                for (label l = 0; l < m; ++l)
-                {
-                    lapU += w[l]*(U[J[l]] - U[i]);
-                }
+                lapU =
+                    wide
+                  ? viscousSumWide(pairs, i, row)
+                  : viscousSumPlain(pairs, i, row);
             }
             acc[i] = coeff*lapU;
         });
