@@ -216,9 +216,19 @@ void Foam::pressureEquation::assemble
             return;
         }
 
+        // (the matrix's arrays through locals: the compiler then knows
+        // that writing an entry changes no pointer)
+        ppeMatrix::StorageIndex* const C = cols;
+        double* const V = vals;
+        const label diagCol = unknown_[i];
+
+        // The row's entries in the neighbours' order, the diagonal's place
+        // kept before the first larger column (the columns follow the
+        // particles' order: the row is then sorted as it is written)
         scalar diag = 0;
         scalar nL = 0;
         label e = start;
+        label diagAt = -1;
         for (label k = offsets[i]; k < offsets[i + 1]; ++k)
         {
             const label c = column[nbr[k]];
@@ -231,10 +241,18 @@ void Foam::pressureEquation::assemble
             diag += a;
             if (c >= 0)
             {
-                cols[e] = c;
-                vals[e] = -a;
+                if (diagAt < 0 && c > diagCol)
+                {
+                    diagAt = e++;
+                }
+                C[e] = c;
+                V[e] = -a;
                 ++e;
             }
+        }
+        if (diagAt < 0)
+        {
+            diagAt = e++;
         }
         if (airSites_[i])
         {
@@ -248,25 +266,29 @@ void Foam::pressureEquation::assemble
         b[row] = -s.rhs + oldComp*p[i];
         sol[row] = p[i];
 
-        cols[e] = unknown_[i];
-        vals[e] = diag;
-        ++e;
+        C[diagAt] = diagCol;
+        V[diagAt] = diag;
 
-        // Columns in increasing order within the row (insertion sort: a
-        // row has a few dozen entries)
+        // Columns in increasing order within the row, where they were not
+        // (insertion sort: a row has a few dozen entries; under -parallel
+        // other ranks' columns may come in another order)
         for (label m = start + 1; m < e; ++m)
         {
-            const ppeMatrix::StorageIndex c = cols[m];
-            const double v = vals[m];
-            label l = m - 1;
-            while (l >= start && cols[l] > c)
+            const ppeMatrix::StorageIndex c = C[m];
+            if (!(C[m - 1] > c))
             {
-                cols[l + 1] = cols[l];
-                vals[l + 1] = vals[l];
+                continue;
+            }
+            const double v = V[m];
+            label l = m - 1;
+            while (l >= start && C[l] > c)
+            {
+                C[l + 1] = C[l];
+                V[l + 1] = V[l];
                 --l;
             }
-            cols[l + 1] = c;
-            vals[l + 1] = v;
+            C[l + 1] = c;
+            V[l + 1] = v;
         }
     });
 }
