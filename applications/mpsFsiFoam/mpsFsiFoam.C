@@ -95,7 +95,8 @@ int main(int argc, char *argv[])
     Info<< "Floating-point traps: off (every step is checked for values"
         << " that are not finite)" << nl
         << "OpenMP threads: " << omp_get_max_threads() << nl
-        << "Vector loops: the shift's rows on "
+        << "Vector loops: the fluid step's rows (neighbours, viscosity,"
+        << " kernel, shift) on "
         << (wideVectors() ? "AVX-512" : "x86-64")
         << " (MPSFSIFOAM_WIDE_VECTORS=0: x86-64's; the same numbers)" << nl
         << endl;
