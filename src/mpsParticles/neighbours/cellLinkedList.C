@@ -44,10 +44,61 @@ Foam::cellLinkedList::cellLinkedList
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::cellLinkedList::bounds
+(
+    const UList<vector2D>& x,
+    vector2D& lo,
+    vector2D& hi
+)
+{
+    lo = vector2D(GREAT, GREAT);
+    hi = vector2D(-GREAT, -GREAT);
+    for (const vector2D& p : x)
+    {
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+    if (x.empty())
+    {
+        lo = hi = vector2D::zero;
+    }
+}
+
+
 void Foam::cellLinkedList::build
 (
     const UList<vector2D>& x,
     const scalar cellSize
+)
+{
+    vector2D lo, hi;
+    bounds(x, lo, hi);
+    build(x, cellSize, lo, hi);
+}
+
+
+void Foam::cellLinkedList::buildForRadius
+(
+    const UList<vector2D>& x,
+    const scalar radius
+)
+{
+    vector2D lo, hi;
+    bounds(x, lo, hi);
+    const scalar half = 0.5*radius;
+    const scalar nHalf =
+        (std::floor((hi.x() - lo.x())/half) + 1)
+       *(std::floor((hi.y() - lo.y())/half) + 1);
+    build(x, nHalf <= 2.0*x.size() + 64 ? half : radius, lo, hi);
+}
+
+
+void Foam::cellLinkedList::build
+(
+    const UList<vector2D>& x,
+    const scalar cellSize,
+    const vector2D& lo,
+    const vector2D& hi
 )
 {
     if (!(cellSize > 0))
@@ -58,19 +109,6 @@ void Foam::cellLinkedList::build
     }
 
     h_ = cellSize;
-
-    vector2D lo(GREAT, GREAT);
-    vector2D hi(-GREAT, -GREAT);
-    for (const vector2D& p : x)
-    {
-        lo = min(lo, p);
-        hi = max(hi, p);
-    }
-    if (x.empty())
-    {
-        lo = hi = vector2D::zero;
-    }
-
     origin_ = lo;
 
     // Count the cells in floating point first: far-flung points would

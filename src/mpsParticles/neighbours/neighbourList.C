@@ -48,7 +48,7 @@ void Foam::neighbourList::build
     const scalar radius
 )
 {
-    cells_.build(x, radius);
+    cells_.buildForRadius(x, radius);
     build(x, cells_, radius);
 }
 
@@ -66,7 +66,7 @@ void Foam::neighbourList::build
         return;
     }
     const SubList<vector2D> active(x, nActive);
-    cells_.build(active, radius);
+    cells_.buildForRadius(active, radius);
     build(active, cells_, radius);
     const label nPairs = offsets_[nActive];
     offsets_.setSize(x.size() + 1, nPairs);
@@ -204,8 +204,21 @@ void Foam::neighbourList::build
                 }
             }
             // In index order: the list does not depend on the cells (a
-            // list filtered from a larger one is the same list)
-            std::sort(nbrs.begin() + start, nbrs.end());
+            // list filtered from a larger one is the same list); an
+            // insertion sort, the row being found in runs already in order
+            // (each cell's points in index order)
+            label* a = nbrs.data();
+            for (label m = start + 1; m < nbrs.size(); ++m)
+            {
+                const label v = a[m];
+                label l = m - 1;
+                while (l >= start && a[l] > v)
+                {
+                    a[l + 1] = a[l];
+                    --l;
+                }
+                a[l + 1] = v;
+            }
         }
     );
 }
