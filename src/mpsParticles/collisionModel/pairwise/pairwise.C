@@ -77,7 +77,7 @@ Foam::label Foam::collisionModels::pairwise::correct
     const scalar d2 = sqr(alpha_*l0);
     const label n = cloud.size();
 
-    List<vector2D> dU(n, Zero);
+    List<vector2D> dU(n);
     label nPairs = 0;
 
     rowChunks rows(n);
@@ -86,6 +86,7 @@ Foam::label Foam::collisionModels::pairwise::correct
     {
         if (kind[i] != particleKind::fluid)
         {
+            dU[i] = Zero;
             return;
         }
         vector2D dUi(Zero);

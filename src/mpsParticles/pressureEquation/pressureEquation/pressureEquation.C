@@ -86,20 +86,28 @@ Foam::label Foam::pressureEquation::setUnknowns()
     zeroRow_.setSize(nPart);
     airSites_.setSize(nPart);
     unknown_.setSize(nPart);
-    label nUnknowns = 0;
-    nSolved_ = 0;
+    label nSolved = 0;
+    #pragma omp parallel for schedule(static) reduction(+:nSolved)
     for (label i = 0; i < nPart; ++i)
     {
         const bool inPPE =
             (kind[i] == particleKind::fluid || kind[i] == particleKind::wall);
         zeroRow_[i] = surface_->zeroRow(cloud_, i);
         airSites_[i] = surface_->airSites(cloud_, i);
-        unknown_[i] = (inPPE && owned(i)) ? nUnknowns++ : -1;
+        unknown_[i] = (inPPE && owned(i));
         if (!inPPE || zeroRow_[i])
         {
             p[i] = 0;
         }
-        nSolved_ += (inPPE && !zeroRow_[i] && owned(i));
+        nSolved += (inPPE && !zeroRow_[i] && owned(i));
+    }
+    nSolved_ = nSolved;
+
+    // The rows numbered in the particles' order
+    label nUnknowns = 0;
+    for (label i = 0; i < nPart; ++i)
+    {
+        unknown_[i] = unknown_[i] ? nUnknowns++ : -1;
     }
 
     rowStart_ = 0;

@@ -84,7 +84,8 @@ Foam::pressureSolver::performance diagonalPCG
     const Eigen::VectorXd& b,
     Eigen::VectorXd& x,
     const Foam::scalar tolerance,
-    const Foam::label maxIter
+    const Foam::label maxIter,
+    std::vector<Foam::scalar>& work
 )
 {
     using Foam::label;
@@ -124,7 +125,17 @@ Foam::pressureSolver::performance diagonalPCG
         );
     };
 
-    std::vector<scalar> invD(n), r(n), z(n), p(n), q(n);
+    // The vectors in the solver's room, kept between solves (each element
+    // written before it is read: nothing to clear)
+    if (label(work.size()) < 5*n)
+    {
+        work.resize(5*n);
+    }
+    scalar* const invD = work.data();
+    scalar* const r = invD + n;
+    scalar* const z = r + n;
+    scalar* const p = z + n;
+    scalar* const q = p + n;
 
     // Jacobi's inverse diagonal (1 where the diagonal is zero, as Eigen's),
     // r = b - A x
@@ -282,7 +293,7 @@ Foam::pressureSolver::performance Foam::pressureSolvers::PCG::solve
 
     if (preconditioner_ == preconditionerType::diagonal)
     {
-        return diagonalPCG(A, b, p, tolerance_, maxIter_);
+        return diagonalPCG(A, b, p, tolerance_, maxIter_, work_);
     }
 
     Eigen::ConjugateGradient
