@@ -14,6 +14,8 @@ License
 #include "cellLinkedList.H"
 #include "error.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::cellLinkedList::cellLinkedList()
@@ -51,13 +53,18 @@ void Foam::cellLinkedList::bounds
     vector2D& hi
 )
 {
-    lo = vector2D(GREAT, GREAT);
-    hi = vector2D(-GREAT, -GREAT);
-    for (const vector2D& p : x)
+    scalar xLo = GREAT, yLo = GREAT, xHi = -GREAT, yHi = -GREAT;
+    #pragma omp parallel for schedule(static) \
+        reduction(min:xLo, yLo) reduction(max:xHi, yHi)
+    for (label i = 0; i < x.size(); ++i)
     {
-        lo = min(lo, p);
-        hi = max(hi, p);
+        xLo = std::min(xLo, x[i].x());
+        yLo = std::min(yLo, x[i].y());
+        xHi = std::max(xHi, x[i].x());
+        yHi = std::max(yHi, x[i].y());
     }
+    lo = vector2D(xLo, yLo);
+    hi = vector2D(xHi, yHi);
     if (x.empty())
     {
         lo = hi = vector2D::zero;
@@ -133,11 +140,15 @@ void Foam::cellLinkedList::build
     cellStart_.setSize(nCells + 1);
     cellStart_ = 0;
 
-    forAll(x, i)
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < x.size(); ++i)
     {
         label ix, iy;
         cellOf(x[i], ix, iy);
         cellOfPoint[i] = iy*nx_ + ix;
+    }
+    forAll(x, i)
+    {
         ++cellStart_[cellOfPoint[i] + 1];
     }
     for (label c = 0; c < nCells; ++c)
@@ -154,7 +165,8 @@ void Foam::cellLinkedList::build
     }
 
     sorted_.setSize(x.size());
-    forAll(order_, k)
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < order_.size(); ++k)
     {
         sorted_[k] = x[order_[k]];
     }

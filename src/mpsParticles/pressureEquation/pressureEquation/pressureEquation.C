@@ -510,6 +510,7 @@ void Foam::pressureEquation::solve(const scalar dt)
     // where clampNegative says so); zero rows keep p = 0
     UList<scalar>& p = cloud_.p();
     const label nPart = cloud_.size();
+    #pragma omp parallel for schedule(static)
     for (label i = 0; i < nPart; ++i)
     {
         const label row = unknown_[i] - rowStart_;
