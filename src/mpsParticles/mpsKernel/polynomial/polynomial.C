@@ -92,29 +92,19 @@ namespace
         }
     }
 
-    MPS_WIDE_VECTORS void weightsWide
+    MPS_COMPILED_TWICE
     (
-        const scalar invRe,
-        const scalar* r,
-        const label n,
-        scalar* w,
-        scalar* dwdrByR
+        void,
+        weights,
+        (
+            const scalar invRe,
+            const scalar* r,
+            const label n,
+            scalar* w,
+            scalar* dwdrByR
+        ),
+        (invRe, r, n, w, dwdrByR)
     )
-    {
-        weightsRow(invRe, r, n, w, dwdrByR);
-    }
-
-    void weightsPlain
-    (
-        const scalar invRe,
-        const scalar* r,
-        const label n,
-        scalar* w,
-        scalar* dwdrByR
-    )
-    {
-        weightsRow(invRe, r, n, w, dwdrByR);
-    }
 
     // w(r) as one select (0 at and beyond re)
     MPS_ALWAYS_INLINE void valuesRow
@@ -135,29 +125,19 @@ namespace
         }
     }
 
-    MPS_WIDE_VECTORS void valuesWide
+    MPS_COMPILED_TWICE
     (
-        const scalar re,
-        const scalar invRe,
-        const scalar* r,
-        const label n,
-        scalar* w
+        void,
+        values,
+        (
+            const scalar re,
+            const scalar invRe,
+            const scalar* r,
+            const label n,
+            scalar* w
+        ),
+        (re, invRe, r, n, w)
     )
-    {
-        valuesRow(re, invRe, r, n, w);
-    }
-
-    void valuesPlain
-    (
-        const scalar re,
-        const scalar invRe,
-        const scalar* r,
-        const label n,
-        scalar* w
-    )
-    {
-        valuesRow(re, invRe, r, n, w);
-    }
 }
 
 
