@@ -122,13 +122,7 @@ MPS_ALWAYS_INLINE Foam::label Foam::mpsFluid::separations
     const label k0 = nbrs_.offsets()[i];
     const label nk = nbrs_.offsets()[i + 1] - k0;
     const labelList& nbr = nbrs_.neighbours();
-    if (label(row.r.size()) < nk)
-    {
-        row.d.resize(nk);
-        row.r.resize(nk);
-        row.a.resize(nk);
-        row.g.resize(nk);
-    }
+    row.fit(nk);
     vector2D* d = row.d.data();
     scalar* r = row.r.data();
     for (label l = 0; l < nk; ++l)
@@ -543,11 +537,7 @@ MPS_ALWAYS_INLINE Foam::vector2D Foam::mpsFluid::viscousSum
     const label nk = pairs.offsets()[i + 1] - k0;
     const label* nbr = pairs.neighbours().cdata() + k0;
     const scalar reV2 = sqr(kV_->re());
-    if (label(row.J.size()) < nk)
-    {
-        row.J.resize(nk);
-        row.r.resize(nk);
-    }
+    row.fit(nk);
     label* J = row.J.data();
     scalar* w = row.r.data();
 
