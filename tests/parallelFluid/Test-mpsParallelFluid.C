@@ -107,7 +107,7 @@ int main(int argc, char *argv[])
     mpsFluid parallel(local, mpsProperties, bounds);
     mpsDecomposition decomposition
     (
-        mesh, parallel.interactionRadius() + l0
+        mesh, parallel.haloRadius() + l0
     );
     if (!reversed)
     {

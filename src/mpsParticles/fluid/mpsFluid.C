@@ -66,6 +66,13 @@ Foam::scalar Foam::mpsFluid::readSkin(const dictionary& dict)
 }
 
 
+Foam::vector2D Foam::mpsFluid::readGravity(const dictionary& dict)
+{
+    const vector g(dict.get<vector>("g"));
+    return vector2D(g.x(), g.y());
+}
+
+
 Foam::scalar Foam::mpsFluid::readPositive
 (
     const dictionary& dict,
@@ -457,7 +464,7 @@ Foam::mpsFluid::mpsFluid
     cloud_(cloud),
     rho_(readPositive(checkEntries(dict), "rho")),
     nu_(dict.get<scalar>("nu")),
-    g_(Zero),
+    g_(readGravity(dict)),
     l0_(readPositive(dict, "l0")),
     minR_(1e-3*l0_),
     kN_(newKernel(dict, "numberDensity", l0_)),
@@ -485,7 +492,7 @@ Foam::mpsFluid::mpsFluid
         kG_->latticeLambda(l0_), minR_
     },
     pairsL_{cloud_, nbrs_, sameL_ ? wN_ : wL_, kL_(), n0L_, lambdaL_, minR_},
-    ppe_(cloud_, dict, pairsN_, pairsL_, rho_),
+    ppe_(cloud_, dict, pairsN_, pairsL_, rho_, g_),
     freeSurface_(freeSurfaceModel::New(dict, l0_)),
     collision_(collisionModel::New(dict)),
     shifting_(particleShifting::New(dict)),
@@ -499,8 +506,6 @@ Foam::mpsFluid::mpsFluid
             << "Entry 'nu' (kinematic viscosity) must not be negative, got "
             << nu_ << exit(FatalIOError);
     }
-    const vector g(dict.get<vector>("g"));
-    g_ = vector2D(g.x(), g.y());
 
     // When the cloud moves particles between ranks (before a write), the
     // pairs and gradients that fluidPressureAt reads follow them
@@ -639,6 +644,14 @@ void Foam::mpsFluid::evaluate()
 Foam::scalar Foam::mpsFluid::interactionRadius() const
 {
     return max(max(kN_->re(), kG_->re()), max(kL_->re(), kV_->re()));
+}
+
+
+Foam::scalar Foam::mpsFluid::haloRadius() const
+{
+    return
+        interactionRadius()
+      + (ppe_.wallCondition().wallRows() ? 0 : kL_->re());
 }
 
 

@@ -18,6 +18,8 @@ License
 #include "inputChecks.H"
 #include "rowChunks.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::Enum<Foam::pressureEquation::compressibilityFormType>
@@ -34,11 +36,12 @@ void Foam::pressureEquation::read(const dictionary& ppe)
 {
     wordList valid
     {
-        "source", "surfaceCondition", "compressibility",
+        "source", "surfaceCondition", "wallCondition", "compressibility",
         "compressibilityForm", "clampNegative"
     };
     valid.append(source_->entries());
     valid.append(surface_->entries());
+    valid.append(walls_->entries());
     inputChecks::keywords(ppe, valid, "ppe");
 
     compressibility_ = ppe.getOrDefault<scalar>("compressibility", 0);
@@ -86,12 +89,14 @@ Foam::label Foam::pressureEquation::setUnknowns()
     zeroRow_.setSize(nPart);
     airSites_.setSize(nPart);
     unknown_.setSize(nPart);
+    const bool wallRows = walls_->wallRows();
     label nSolved = 0;
     #pragma omp parallel for schedule(static) reduction(+:nSolved)
     for (label i = 0; i < nPart; ++i)
     {
         const bool inPPE =
-            (kind[i] == particleKind::fluid || kind[i] == particleKind::wall);
+            kind[i] == particleKind::fluid
+         || (kind[i] == particleKind::wall && wallRows);
         zeroRow_[i] = surface_->zeroRow(cloud_, i);
         airSites_[i] = surface_->airSites(cloud_, i);
         unknown_[i] = (inPPE && owned(i));
@@ -131,6 +136,62 @@ Foam::label Foam::pressureEquation::setUnknowns()
 }
 
 
+Foam::label Foam::pressureEquation::wallCouplingColumns
+(
+    const label i,
+    const scalar lapCoeff,
+    const labelList& column
+) const
+{
+    const labelList& offsets = laplacian_.pairs.offsets();
+    const labelList& nbr = laplacian_.pairs.neighbours();
+
+    // The wall condition's couplings, on the columns of the fluid rows
+    // (a fluid particle that is no row, or a zero row, has p = 0), merged
+    // by column
+    ppeWallCondition::couplingList& c = wallCouplings_[i];
+    walls_->couplings(laplacian_, i, lapCoeff, c);
+    std::vector<std::pair<label, scalar>>& e = c.entries;
+    label n = 0;
+    for (const auto& fe : e)
+    {
+        const label col = column[fe.first];
+        if (col >= 0)
+        {
+            e[n++] = {col, fe.second};
+        }
+    }
+    e.resize(n);
+    std::sort(e.begin(), e.end());
+    n = 0;
+    for (label m = 0; m < label(e.size()); ++m)
+    {
+        if (n > 0 && e[n - 1].first == e[m].first)
+        {
+            e[n - 1].second += e[m].second;
+        }
+        else
+        {
+            e[n++] = e[m];
+        }
+    }
+    e.resize(n);
+
+    // The columns that are neither the diagonal nor a neighbour's
+    label extra = 0;
+    for (const auto& ce : e)
+    {
+        bool found = (ce.first == unknown_[i]);
+        for (label k = offsets[i]; !found && k < offsets[i + 1]; ++k)
+        {
+            found = (column[nbr[k]] == ce.first);
+        }
+        extra += !found;
+    }
+    return extra;
+}
+
+
 void Foam::pressureEquation::assemble
 (
     const scalar dt,
@@ -152,6 +213,11 @@ void Foam::pressureEquation::assemble
     const scalar lapCoeff = 2*2/(laplacian_.lambda*n0L);
     const scalar kappa = compressibility_*rho_/sqr(dt);
     const scalar airWeight = surface_->airWeight();
+    const bool wallRows = walls_->wallRows();
+    if (!wallRows)
+    {
+        wallCouplings_.setSize(nPart);
+    }
 
     // Weak compressibility: absolute, kappa p on the diagonal; rate, the
     // divergence term is the rate of the density, kappa (p - p_old), and
@@ -190,6 +256,10 @@ void Foam::pressureEquation::assemble
             for (label k = offsets[i]; k < offsets[i + 1]; ++k)
             {
                 nnz += (column[nbr[k]] >= 0);
+            }
+            if (!wallRows)
+            {
+                nnz += wallCouplingColumns(i, lapCoeff, column);
             }
         }
         outer[unknown_[i] - rowStart_ + 1] = nnz;
@@ -262,6 +332,40 @@ void Foam::pressureEquation::assemble
         {
             diagAt = e++;
         }
+        scalar bWalls = 0;
+        if (!wallRows)
+        {
+            // The couplings through the walls: on the diagonal, on a
+            // neighbour's column or on a column of their own
+            const ppeWallCondition::couplingList& cw = wallCouplings_[i];
+            bWalls = cw.rhs;
+            for (const auto& ce : cw.entries)
+            {
+                if (ce.first == diagCol)
+                {
+                    diag += ce.second;
+                    continue;
+                }
+                label at = -1;
+                for (label m = start; m < e && at < 0; ++m)
+                {
+                    if (m != diagAt && C[m] == ce.first)
+                    {
+                        at = m;
+                    }
+                }
+                if (at >= 0)
+                {
+                    V[at] += ce.second;
+                }
+                else
+                {
+                    C[e] = ce.first;
+                    V[e] = ce.second;
+                    ++e;
+                }
+            }
+        }
         if (airSites_[i])
         {
             // The missing sites' weight n0 - sum_j w_ij (dummies count as
@@ -271,7 +375,7 @@ void Foam::pressureEquation::assemble
 
         const ppeSource::row s(source_->source(i, dt, airSites_[i]));
         diag += rateForm_ ? (1 + s.gamma)*kappa : kappa;
-        b[row] = -s.rhs + oldComp*p[i];
+        b[row] = -s.rhs + oldComp*p[i] + bWalls;
         sol[row] = p[i];
 
         C[diagAt] = diagCol;
@@ -364,13 +468,15 @@ Foam::pressureEquation::pressureEquation
     const dictionary& mpsProperties,
     const kernelPairs& number,
     const kernelPairs& laplacian,
-    const scalar rho
+    const scalar rho,
+    const vector2D& g
 )
 :
     cloud_(cloud),
     number_(number),
     laplacian_(laplacian),
     rho_(rho),
+    g_(g),
     compressibility_(0),
     rateForm_(false),
     clampNegative_(true),
@@ -387,6 +493,7 @@ Foam::pressureEquation::pressureEquation
 
     source_ = ppeSource::New(ppe, number_, rho_);
     surface_ = ppeSurfaceCondition::New(ppe);
+    walls_ = ppeWallCondition::New(ppe);
     read(ppe);
 
     Info<< "Pressure equation: ";
@@ -402,7 +509,8 @@ Foam::pressureEquation::pressureEquation
 void Foam::pressureEquation::info(Ostream& os) const
 {
     os  << "source " << source_->type()
-        << ", surfaceCondition " << surface_->type();
+        << ", surfaceCondition " << surface_->type() << ", wallCondition ";
+    walls_->info(os);
     source_->writeRelaxation(os);
     if (source_->fillVoids())
     {
@@ -457,6 +565,7 @@ const Foam::labelList& Foam::pressureEquation::system
         beforeAssembly_();
     }
     const label nUnknowns = setUnknowns();
+    walls_->update(laplacian_, rho_, g_, dt);
     A.resize(nUnknowns, nGlobalRows_);
     b.resize(nUnknowns);
     sol.resize(nUnknowns);
@@ -520,6 +629,11 @@ void Foam::pressureEquation::solve(const scalar dt)
         }
     }
     cloud_.syncHalos(p);
+    if (!walls_->wallRows())
+    {
+        wallPressures(p);
+        cloud_.syncHalos(p);
+    }
     assemblyTime_ = clock.elapsed() - solveTime_;
 }
 
