@@ -52,41 +52,10 @@ bool Foam::mpsFluid::sameKernel(const mpsKernel& a, const mpsKernel& b)
 }
 
 
-Foam::scalar Foam::mpsFluid::readSkin(const dictionary& dict)
-{
-    const scalar skin = dict.getOrDefault<scalar>("neighbourSkin", 0.3);
-    if (!(skin >= 0 && skin <= 2))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'neighbourSkin' (the neighbour lists' skin, in l0)"
-            << " must lie in [0, 2] (0: a full search every step), got "
-            << skin << exit(FatalIOError);
-    }
-    return skin;
-}
-
-
 Foam::vector2D Foam::mpsFluid::readGravity(const dictionary& dict)
 {
     const vector g(dict.get<vector>("g"));
     return vector2D(g.x(), g.y());
-}
-
-
-Foam::scalar Foam::mpsFluid::readPositive
-(
-    const dictionary& dict,
-    const word& key
-)
-{
-    const scalar value = dict.get<scalar>(key);
-    if (!(value > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' must be positive, got " << value
-            << exit(FatalIOError);
-    }
-    return value;
 }
 
 
@@ -462,10 +431,10 @@ Foam::mpsFluid::mpsFluid
 )
 :
     cloud_(cloud),
-    rho_(readPositive(checkEntries(dict), "rho")),
+    rho_(inputChecks::number<scalar>(checkEntries(dict), "rho", "> 0")),
     nu_(dict.get<scalar>("nu")),
     g_(readGravity(dict)),
-    l0_(readPositive(dict, "l0")),
+    l0_(inputChecks::number<scalar>(dict, "l0", "> 0")),
     minR_(1e-3*l0_),
     kN_(newKernel(dict, "numberDensity", l0_)),
     kG_(newKernel(dict, "gradient", l0_)),
@@ -478,7 +447,7 @@ Foam::mpsFluid::mpsFluid
     n0V_(kV_->latticeNumberDensity(l0_)),
     lambdaV_(kV_->latticeLambda(l0_)),
     F0_(kN_->latticeSurfaceAsymmetry(l0_)),
-    search_(interactionRadius(), readSkin(dict)*l0_),
+    search_(interactionRadius(), inputChecks::number<scalar>(dict, "neighbourSkin", 0.3, "[0, 2]")*l0_),
     sameG_(sameKernel(kG_(), kN_())),
     sameL_(sameKernel(kL_(), kN_())),
     pairsN_

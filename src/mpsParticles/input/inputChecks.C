@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "inputChecks.H"
+#include <string>
 #include "DynamicList.H"
 #include <cctype>
 #include <vector>
@@ -219,6 +220,62 @@ void Foam::inputChecks::exclusive
         FatalIOErrorInFunction(dict)
             << "Entries " << words(given).c_str() << " say the same thing"
             << " in two ways: give one of " << words(keys).c_str()
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::inputChecks::checkRange
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar value,
+    const char* range
+)
+{
+    // The range's form: one bound ("> 0", ">= 1", "< 90", "<= 1") or an
+    // interval ("(0, 1]")
+    const std::string r(range);
+    bool ok = false;
+    bool parsed = false;
+    std::string what;
+    if (r.size() > 2 && (r[0] == '>' || r[0] == '<'))
+    {
+        const bool orEqual = r[1] == '=';
+        const scalar bound = std::stod(r.substr(orEqual ? 2 : 1));
+        ok = r[0] == '>'
+            ? (orEqual ? value >= bound : value > bound)
+            : (orEqual ? value <= bound : value < bound);
+        what = r == "> 0" ? std::string("must be positive (> 0)") : "must be " + r;
+        parsed = true;
+    }
+    else if
+    (
+        r.size() > 4
+     && (r.front() == '(' || r.front() == '[')
+     && (r.back() == ')' || r.back() == ']')
+     && r.find(',') != std::string::npos
+    )
+    {
+        const std::size_t comma = r.find(',');
+        const scalar a = std::stod(r.substr(1, comma - 1));
+        const scalar b = std::stod(r.substr(comma + 1, r.size() - comma - 2));
+        ok =
+            (r.front() == '(' ? value > a : value >= a)
+         && (r.back() == ')' ? value < b : value <= b);
+        what = "must lie in " + r;
+        parsed = true;
+    }
+    if (!parsed)
+    {
+        FatalErrorInFunction
+            << "The range '" << r << "' of entry '" << key
+            << "' is not one inputChecks::checkRange reads" << exit(FatalError);
+    }
+    if (!ok)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' " << what.c_str() << ", got " << value
             << exit(FatalIOError);
     }
 }

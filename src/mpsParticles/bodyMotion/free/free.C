@@ -32,7 +32,7 @@ namespace bodyMotions
 Foam::bodyMotions::free::free(const dictionary& dict, const scalar t0)
 :
     bodyMotion(dict, t0),
-    mass_(dict.get<scalar>("mass")),
+    mass_(inputChecks::number<scalar>(dict, "mass", "> 0")),
     g_(dict.getOrDefault<vector2D>("g", vector2D::zero))
 {
     inputChecks::keywords
@@ -41,12 +41,6 @@ Foam::bodyMotions::free::free(const dictionary& dict, const scalar t0)
         {"type", "mass", "initialVelocity", "g"},
         "bodyMotion free"
     );
-    if (!(mass_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'mass' (mass per unit depth [kg/m]) must be positive,"
-            << " got " << mass_ << exit(FatalIOError);
-    }
     U_ = dict.get<vector2D>("initialVelocity");
 }
 

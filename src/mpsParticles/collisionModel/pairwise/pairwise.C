@@ -33,8 +33,8 @@ namespace collisionModels
 Foam::collisionModels::pairwise::pairwise(const dictionary& dict)
 :
     collisionModel(dict),
-    alpha_(dict.getOrDefault<scalar>("alpha", 0.85)),
-    e_(dict.getOrDefault<scalar>("e", 0.2))
+    alpha_(inputChecks::number<scalar>(dict, "alpha", 0.85, "(0, 1)")),
+    e_(inputChecks::number<scalar>(dict, "e", 0.2, "[0, 1]"))
 {
     inputChecks::keywords
     (
@@ -42,18 +42,6 @@ Foam::collisionModels::pairwise::pairwise(const dictionary& dict)
         {"type", "alpha", "e"},
         "collision pairwise"
     );
-    if (!(alpha_ > 0 && alpha_ < 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'alpha' (collision distance / l0) must lie in (0, 1),"
-            << " got " << alpha_ << exit(FatalIOError);
-    }
-    if (!(e_ >= 0 && e_ <= 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'e' (restitution coefficient) must lie in [0, 1], got "
-            << e_ << exit(FatalIOError);
-    }
 }
 
 

@@ -26,24 +26,6 @@ namespace Foam
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::freeSurfaceModel::readFraction
-(
-    const word& key,
-    const scalar deflt
-) const
-{
-    const scalar value =
-        inputChecks::value(dict_, key).getOrDefault<scalar>(key, deflt);
-    if (!(value > 0 && value <= 1))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Entry '" << key << "' must lie in (0, 1], got " << value
-            << exit(FatalIOError);
-    }
-    return value;
-}
-
-
 void Foam::freeSurfaceModel::numberDensityTest
 (
     const mpsCloud& cloud,

@@ -107,18 +107,16 @@ Foam::freeSurfaceModels::improved::improved
 )
 :
     freeSurfaceModel(dict),
-    beta_(readFraction("beta", 0.8)),
-    asymmetry_(readFraction("asymmetry", 0.6)),
+    beta_(inputChecks::number<scalar>(dict, "beta", 0.8, "(0, 1]")),
+    asymmetry_(inputChecks::number<scalar>(dict, "asymmetry", 0.6, "(0, 1]")),
     wallTest_
     (
-        wallTestTypeNames.getOrDefault
+        inputChecks::choice
         (
-            "wallTest",
-            inputChecks::value(dict, "wallTest"),
-            wallTestType::numberDensity
+            dict, "wallTest", wallTestTypeNames, wallTestType::numberDensity
         )
     ),
-    wallBeta_(readFraction("wallBeta", 0.97)),
+    wallBeta_(inputChecks::number<scalar>(dict, "wallBeta", 0.97, "(0, 1]")),
     wallKernel_(nullptr),
     wallN0_(0),
     l0_(l0)

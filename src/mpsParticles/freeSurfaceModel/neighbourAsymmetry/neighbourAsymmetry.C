@@ -37,8 +37,8 @@ Foam::freeSurfaceModels::neighbourAsymmetry::neighbourAsymmetry
 )
 :
     freeSurfaceModel(dict),
-    beta_(readFraction("beta", 0.8)),
-    asymmetry_(readFraction("asymmetry", 0.6))
+    beta_(inputChecks::number<scalar>(dict, "beta", 0.8, "(0, 1]")),
+    asymmetry_(inputChecks::number<scalar>(dict, "asymmetry", 0.6, "(0, 1]"))
 {
     inputChecks::keywords
     (

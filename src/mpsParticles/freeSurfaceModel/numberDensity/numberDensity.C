@@ -37,7 +37,7 @@ Foam::freeSurfaceModels::numberDensity::numberDensity
 )
 :
     freeSurfaceModel(dict),
-    beta_(readFraction("beta", 0.97))
+    beta_(inputChecks::number<scalar>(dict, "beta", 0.97, "(0, 1]"))
 {
     inputChecks::keywords(dict, {"type", "beta"}, "freeSurface numberDensity");
 }

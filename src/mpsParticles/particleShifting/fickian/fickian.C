@@ -134,14 +134,20 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
     particleShifting(dict),
     diffusion_
     (
-        diffusionTypeNames.getOrDefault
+        inputChecks::choice
         (
-            "diffusion", checkEntries(dict), diffusionType::velocity
+            checkEntries(dict),
+            "diffusion",
+            diffusionTypeNames,
+            diffusionType::velocity
         )
     ),
     surface_
     (
-        surfaceTypeNames.getOrDefault("surface", dict, surfaceType::fixed)
+        inputChecks::choice
+        (
+            dict, "surface", surfaceTypeNames, surfaceType::fixed
+        )
     ),
     A_
     (
@@ -150,9 +156,9 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
             "coefficient", diffusion_ == diffusionType::velocity ? 2 : 0.05
         )
     ),
-    maxShift_(dict.getOrDefault<scalar>("maxShift", 0.1)),
-    R_(dict.getOrDefault<scalar>("tensileCorrection", 0.2)),
-    exponent_(dict.getOrDefault<scalar>("tensileExponent", 4)),
+    maxShift_(inputChecks::number<scalar>(dict, "maxShift", 0.1, "(0, 0.5]")),
+    R_(inputChecks::number<scalar>(dict, "tensileCorrection", 0.2, "[0, 1]")),
+    exponent_(inputChecks::number<scalar>(dict, "tensileExponent", 4, "[1, 8]")),
     wholeExponent_
     (
         exponent_ == std::round(exponent_) ? label(exponent_) : label(-1)
@@ -168,19 +174,6 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
             << "Entry 'coefficient' (A of the diffusion coefficient, "
             << diffusionTypeNames[diffusion_] << " form) must lie in (0, "
             << maxA << "], got " << A_ << exit(FatalIOError);
-    }
-    if (!(maxShift_ > 0 && maxShift_ <= 0.5))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'maxShift' (largest shift in one step, in l0) must lie"
-            << " in (0, 0.5], got " << maxShift_ << exit(FatalIOError);
-    }
-    if (!(R_ >= 0 && R_ <= 1 && exponent_ >= 1 && exponent_ <= 8))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entries 'tensileCorrection' (R, in [0, 1], got " << R_
-            << ") and 'tensileExponent' (n, in [1, 8], got " << exponent_
-            << ") are out of range" << exit(FatalIOError);
     }
 }
 

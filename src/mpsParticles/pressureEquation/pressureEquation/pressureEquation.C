@@ -52,9 +52,12 @@ void Foam::pressureEquation::read(const dictionary& ppe)
             << compressibility_ << exit(FatalIOError);
     }
     const compressibilityFormType form =
-        compressibilityFormTypeNames.getOrDefault
+        inputChecks::choice
         (
-            "compressibilityForm", ppe, compressibilityFormType::absolute
+            ppe,
+            "compressibilityForm",
+            compressibilityFormTypeNames,
+            compressibilityFormType::absolute
         );
     rateForm_ = form == compressibilityFormType::rate && source_->hasRate();
     clampNegative_ = ppe.getOrDefault<bool>("clampNegative", true);

@@ -34,7 +34,7 @@ Foam::pressureGradients::corrected::corrected(const dictionary& dict)
 :
     pressureGradient(dict),
     particleReference_(true),
-    minDeterminant_(dict.getOrDefault<scalar>("minDeterminant", 0.1))
+    minDeterminant_(inputChecks::number<scalar>(dict, "minDeterminant", 0.1, "(0, 1)"))
 {
     inputChecks::keywords
     (
@@ -50,13 +50,6 @@ Foam::pressureGradients::corrected::corrected(const dictionary& dict)
             << "Valid references: (particle minimum)" << exit(FatalIOError);
     }
     particleReference_ = (reference == "particle");
-    if (!(minDeterminant_ > 0 && minDeterminant_ < 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'minDeterminant' must lie in (0, 1) (1: an isotropic"
-            << " neighbourhood), got " << minDeterminant_
-            << exit(FatalIOError);
-    }
 }
 
 

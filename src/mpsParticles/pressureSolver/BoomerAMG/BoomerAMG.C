@@ -89,8 +89,11 @@ HYPRE_Int keepHierarchy(HYPRE_Solver, HYPRE_Matrix, HYPRE_Vector, HYPRE_Vector)
 Foam::pressureSolvers::BoomerAMG::BoomerAMG(const dictionary& dict)
 :
     pressureSolver(dict),
-    strongThreshold_(dict.getOrDefault<scalar>("strongThreshold", 0.25)),
-    reuse_(dict.getOrDefault<label>("reuse", 10)),
+    strongThreshold_
+    (
+        inputChecks::number<scalar>(dict, "strongThreshold", 0.25, "(0, 1)")
+    ),
+    reuse_(inputChecks::number<label>(dict, "reuse", 10, ">= 1")),
     hierarchy_(new hierarchy)
 {
     inputChecks::keywords
@@ -99,18 +102,6 @@ Foam::pressureSolvers::BoomerAMG::BoomerAMG(const dictionary& dict)
         {"type", "tolerance", "maxIter", "strongThreshold", "reuse"},
         "pressureSolver BoomerAMG"
     );
-    if (reuse_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'reuse' (solves per multigrid hierarchy) must be at"
-            << " least 1, got " << reuse_ << exit(FatalIOError);
-    }
-    if (!(strongThreshold_ > 0 && strongThreshold_ < 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'strongThreshold' must lie in (0, 1), got "
-            << strongThreshold_ << exit(FatalIOError);
-    }
     hypreSystem::initialise();
 }
 

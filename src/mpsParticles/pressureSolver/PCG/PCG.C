@@ -260,10 +260,11 @@ Foam::pressureSolvers::PCG::PCG(const dictionary& dict)
     pressureSolver(dict),
     preconditioner_
     (
-        preconditionerNames.getOrDefault
+        inputChecks::choice
         (
-            "preconditioner",
             dict,
+            "preconditioner",
+            preconditionerNames,
             preconditionerType::diagonal
         )
     )

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "pressureSolver.H"
+#include "inputChecks.H"
 #include "Pstream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -28,22 +29,9 @@ namespace Foam
 Foam::pressureSolver::pressureSolver(const dictionary& dict)
 :
     dict_(dict),
-    tolerance_(dict.getOrDefault<scalar>("tolerance", 1e-8)),
-    maxIter_(dict.getOrDefault<label>("maxIter", 2000))
-{
-    if (!(tolerance_ > 0 && tolerance_ < 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'tolerance' (relative residual) must lie in (0, 1), got "
-            << tolerance_ << exit(FatalIOError);
-    }
-    if (maxIter_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'maxIter' must be at least 1, got " << maxIter_
-            << exit(FatalIOError);
-    }
-}
+    tolerance_(inputChecks::number<scalar>(dict, "tolerance", 1e-8, "(0, 1)")),
+    maxIter_(inputChecks::number<label>(dict, "maxIter", 2000, ">= 1"))
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

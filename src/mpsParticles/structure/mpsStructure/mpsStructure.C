@@ -311,15 +311,7 @@ Foam::scalar Foam::mpsStructure::spacing
     }
     if (dict.found("spacingRatio"))
     {
-        const scalar ratio = dict.get<scalar>("spacingRatio");
-        if (!(ratio >= 1))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'spacingRatio' (fluid l0 over structural spacing)"
-                << " must be at least 1, got " << ratio
-                << exit(FatalIOError);
-        }
-        return l0/ratio;
+        return l0/inputChecks::number<scalar>(dict, "spacingRatio", ">= 1");
     }
     return l0;
 }

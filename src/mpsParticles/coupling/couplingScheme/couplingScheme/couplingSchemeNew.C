@@ -13,6 +13,7 @@ License
 
 #include "couplingScheme.H"
 #include "inputChecks.H"
+#include "DynamicList.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -30,12 +31,28 @@ Foam::word Foam::couplingScheme::selectedType
     (
         couplingPtr->getOrDefault<word>("scheme", "explicit")
     );
-    if (!dictionaryConstructorTablePtr_->found(schemeType))
+    // none is the scheme of a case without a coupling dictionary: in one,
+    // the structure would move and the walls it names stay where they are
+    if (schemeType == "none" || !dictionaryConstructorTablePtr_->found(schemeType))
     {
+        DynamicList<word> valid;
+        for (const word& w : dictionaryConstructorTablePtr_->sortedToc())
+        {
+            if (w != "none")
+            {
+                valid.append(w);
+            }
+        }
         FatalIOErrorInFunction(*couplingPtr)
-            << "Entry 'scheme': " << schemeType << " is not valid" << nl
-            << "Valid coupling schemes: "
-            << dictionaryConstructorTablePtr_->sortedToc()
+            << "Entry 'scheme': " << schemeType << " is not valid"
+            << (
+                   schemeType == "none"
+                 ? " in a coupling dictionary (its walls would stay where"
+                   " they are while the structure moves; to run without"
+                   " coupling, remove the dictionary coupling)"
+                 : ""
+               ) << nl
+            << "Valid coupling schemes: " << valid
             << exit(FatalIOError);
     }
     return schemeType;

@@ -758,14 +758,7 @@ void Foam::structureModel::readTimeIntegration()
             << " (implicit, at the fluid's step)" << exit(FatalIOError);
     }
     integration_ = integrationType::generalisedAlpha;
-    rhoInf_ = ti.getOrDefault<scalar>("spectralRadius", 0.8);
-    if (!(rhoInf_ >= 0 && rhoInf_ <= 1))
-    {
-        FatalIOErrorInFunction(ti)
-            << "Entry 'spectralRadius' " << rhoInf_ << " must lie in [0, 1]"
-            << " (1: no numerical damping; 0: the highest modes removed in"
-            << " one step)" << exit(FatalIOError);
-    }
+    rhoInf_ = inputChecks::number<scalar>(ti, "spectralRadius", 0.8, "[0, 1]");
     if (stiffnessDamping_ > 0)
     {
         FatalIOErrorInFunction(dict_)
