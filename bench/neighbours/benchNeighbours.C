@@ -85,6 +85,12 @@ int main(int argc, char *argv[])
         "list",
         "numbers of particles, default (30000 300000)"
     );
+    argList::addOption
+    (
+        "repeat",
+        "n",
+        "builds timed a size (the best is kept), default max(3, 3e6/n)"
+    );
     argList args(argc, argv, false, false);
 
     const labelList sizes
@@ -98,7 +104,8 @@ int main(int argc, char *argv[])
     for (const label n : sizes)
     {
         const List<vector2D> x(jitteredLattice(n, l0));
-        const label nRepeat = max(label(3), label(3e6/n));
+        const label nRepeat =
+            args.getOrDefault<label>("repeat", max(label(3), label(3e6/n)));
 
         {
             scalar best = GREAT;

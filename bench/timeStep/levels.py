@@ -152,7 +152,7 @@ def figures(run):
                     if line.startswith("#"):
                         continue
                     v = [float(x) for x in line.split()]
-                    if v[0] < 0.8 and v[3] > 1:
+                    if v[0] < 0.8 and v[3] > 1 and v[1] != 0:
                         ratios.append(v[2]/v[1])
             fig["Cp scatter [%]"] = 100*mean(ratios)
     k = 1
