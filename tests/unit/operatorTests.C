@@ -464,28 +464,9 @@ TEST_CASE("continuousWalls: the fluid's surface rows are p = 0, the walls' rows 
     const label nx = 12, ny = 8, nWall = 16;
     auto corner = [&](mpsCloud& c)
     {
-        const label r = c.addRegion("corner");
-        for (label j = 0; j < ny; ++j)
-        {
-            for (label i = 0; i < nx; ++i)
-            {
-                c.append(l0*vector2D(i + 0.5, j + 0.5), particleKind::fluid, r, l0);
-            }
-        }
-        for (label layer = 0; layer < 3; ++layer)
-        {
-            const particleKind kind =
-                layer == 0 ? particleKind::wall : particleKind::dummy;
-            for (label i = -layer - 1; i < nx + 3; ++i)
-            {
-                c.append(l0*vector2D(i + 0.5, -layer - 0.5), kind, r, l0);
-            }
-            for (label j = -layer; j < nWall; ++j)
-            {
-                c.append(l0*vector2D(-layer - 0.5, j + 0.5), kind, r, l0);
-            }
-        }
+        test::tankCorner(c, l0, nx, ny, nWall);
     };
+
     // Each particle's row: its diagonal, the number of its other entries,
     // and its right-hand side (NaN: no row)
     struct rows

@@ -17,32 +17,11 @@ namespace
 const scalar l0 = 0.01;
 const label nx = 12, ny = 8, nWall = 16;
 
-// A tank's corner: water nx x ny at rest on a bottom wall that runs three
-// spacings past it, beside a left wall that rises above it, each with two
-// dummy layers (the original kernel at 2.1 l0 reaches 2.1 l0 into them)
+// A tank's corner: water nx x ny at rest on a bottom wall and beside a
+// left wall nWall rows high (test::tankCorner)
 void corner(mpsCloud& c)
 {
-    const label r = c.addRegion("corner");
-    for (label j = 0; j < ny; ++j)
-    {
-        for (label i = 0; i < nx; ++i)
-        {
-            c.append(l0*vector2D(i + 0.5, j + 0.5), particleKind::fluid, r, l0);
-        }
-    }
-    for (label layer = 0; layer < 3; ++layer)
-    {
-        const particleKind kind =
-            layer == 0 ? particleKind::wall : particleKind::dummy;
-        for (label i = -layer - 1; i < nx + 3; ++i)
-        {
-            c.append(l0*vector2D(i + 0.5, -layer - 0.5), kind, r, l0);
-        }
-        for (label j = -layer; j < nWall; ++j)
-        {
-            c.append(l0*vector2D(-layer - 0.5, j + 0.5), kind, r, l0);
-        }
-    }
+    test::tankCorner(c, l0, nx, ny, nWall);
 }
 
 dictionary fluidDict(const std::string& ppe)
