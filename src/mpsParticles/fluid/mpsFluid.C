@@ -21,6 +21,13 @@ License
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
+const Foam::Enum<Foam::mpsFluid::wallPositionsType>
+Foam::mpsFluid::wallPositionsTypeNames
+({
+    {wallPositionsType::lagged, "lagged"},
+    {wallPositionsType::predicted, "predicted"},
+});
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
@@ -31,7 +38,7 @@ const Foam::dictionary& Foam::mpsFluid::checkEntries(const dictionary& dict)
         {
             "rho", "nu", "g", "l0", "kernel", "re", "ppe", "freeSurface",
             "collision", "pressureSolver", "pressureGradient", "shifting",
-            "neighbourSkin"
+            "neighbourSkin", "wallPositions"
         },
         "constant/mpsProperties"
     );
@@ -319,12 +326,20 @@ void Foam::mpsFluid::predict(const scalar dt, const neighbourList& pairs)
     List<vector2D> acc;
     viscousAcceleration(pairs, acc);
 
+    const bool moveWalls = wallPositions_ == wallPositionsType::predicted;
+
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < cloud_.size(); ++i)
     {
         if (kind[i] == particleKind::fluid)
         {
             U[i] += dt*(acc[i] + g_);
+            x[i] += dt*U[i];
+        }
+        else if (moveWalls)
+        {
+            // Walls and dummies at the step's end with the water's x*
+            // (the coupling then puts them where the structure went)
             x[i] += dt*U[i];
         }
     }
@@ -361,6 +376,17 @@ void Foam::mpsFluid::correct(const scalar dt)
     syncHalos(x);
     reduceRanks(maxSpeed2, maxOp<scalar>());
     info_.maxSpeed = ::sqrt(maxSpeed2);
+}
+
+
+void Foam::mpsFluid::collide(const neighbourList& pairs, const scalar dt)
+{
+    label nPairs =
+        collision_->correct(cloud_, pairs, l0_, dt, cloud_.x(), cloud_.U());
+    syncHalos(cloud_.U());
+    syncHalos(cloud_.x());
+    reduceRanks(nPairs, sumOp<label>());
+    info_.nCollisions += nPairs;
 }
 
 
@@ -447,6 +473,16 @@ Foam::mpsFluid::mpsFluid
     n0V_(kV_->latticeNumberDensity(l0_)),
     lambdaV_(kV_->latticeLambda(l0_)),
     F0_(kN_->latticeSurfaceAsymmetry(l0_)),
+    wallPositions_
+    (
+        inputChecks::choice
+        (
+            dict,
+            "wallPositions",
+            wallPositionsTypeNames,
+            wallPositionsType::lagged
+        )
+    ),
     search_(interactionRadius(), inputChecks::number<scalar>(dict, "neighbourSkin", 0.3, "[0, 2]")*l0_),
     sameG_(sameKernel(kG_(), kN_())),
     sameL_(sameKernel(kL_(), kN_())),
@@ -630,7 +666,8 @@ void Foam::mpsFluid::info(Ostream& os) const
         << "    kernel " << kN_->type() << ", radii [l0]: numberDensity "
         << kN_->re()/l0_ << ", gradient " << kG_->re()/l0_ << ", laplacian "
         << kL_->re()/l0_ << ", viscosity " << kV_->re()/l0_
-        << ", neighbour skin " << search_.skin()/l0_ << nl
+        << ", neighbour skin " << search_.skin()/l0_
+        << ", wallPositions " << wallPositionsTypeNames[wallPositions_] << nl
         << "    freeSurface ";
     freeSurface_->info(os);
     os  << nl << "    collision ";
@@ -705,12 +742,11 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
     predict(dt, candidates);
     lap(info_.timeRest);
 
-    info_.nCollisions = collision_->correct
-    (
-        cloud_, candidates, l0_, dt, cloud_.x(), cloud_.U()
-    );
-    syncHalos(cloud_.U());
-    syncHalos(cloud_.x());
+    info_.nCollisions = 0;
+    if (collision_->stage() == collisionModel::stageType::predicted)
+    {
+        collide(candidates, dt);
+    }
     info_.finite = allFinite();
     if (!info_.finite)
     {
@@ -718,7 +754,6 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
         return false;
     }
     // (counts of the step are those of all ranks)
-    reduceRanks(info_.nCollisions, sumOp<label>());
     info_.nRemoved = removeOutside();
     reduceRanks(info_.nRemoved, sumOp<label>());
     info_.totalRemoved += info_.nRemoved;
@@ -777,6 +812,12 @@ const Foam::mpsFluid::stepInfo& Foam::mpsFluid::endStep(const scalar dt)
         // (the halos of removed particles with them)
         redistribute();
         rebuildPairs();
+    }
+    if (collision_->stage() == collisionModel::stageType::corrected)
+    {
+        // The pairs at x*, within the largest kernel radius: those closer
+        // than the collision distance at x^{k+1} among them
+        collide(nbrs_, dt);
     }
     info_.maxShift = shifting_->shift(cloud_, nbrs_, l0_, kN_->re(), dt);
     syncHalos(cloud_.x());

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "collisionModel.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -21,13 +22,30 @@ namespace Foam
     defineRunTimeSelectionTable(collisionModel, dictionary);
 }
 
+const Foam::Enum<Foam::collisionModel::stageType>
+Foam::collisionModel::stageTypeNames
+({
+    {stageType::predicted, "predicted"},
+    {stageType::corrected, "corrected"},
+});
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::collisionModel::collisionModel(const dictionary& dict)
 :
-    dict_(dict)
+    dict_(dict),
+    stage_(stageType::predicted)
 {}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::collisionModel::readStage()
+{
+    stage_ =
+        inputChecks::choice(dict_, "stage", stageTypeNames, stage_);
+}
 
 
 // ************************************************************************* //

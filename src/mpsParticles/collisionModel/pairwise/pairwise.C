@@ -39,9 +39,10 @@ Foam::collisionModels::pairwise::pairwise(const dictionary& dict)
     inputChecks::keywords
     (
         dict,
-        {"type", "alpha", "e"},
+        {"type", "alpha", "e", "stage"},
         "collision pairwise"
     );
+    readStage();
 }
 
 
@@ -118,7 +119,8 @@ Foam::label Foam::collisionModels::pairwise::correct
 
 void Foam::collisionModels::pairwise::info(Ostream& os) const
 {
-    os  << type() << " (alpha " << alpha_ << ", e " << e_ << ')';
+    os  << type() << " (alpha " << alpha_ << ", e " << e_
+        << ", stage " << stageTypeNames[stage_] << ')';
 }
 
 
