@@ -3,7 +3,8 @@
   (Lind et al. 2012) leaves a regular lattice where it is, walls and flat
   free surface included; it makes a disordered block regular without
   moving its free surface into the air; it carries a linear velocity field
-  to the new positions exactly; its entries are checked.
+  to the new positions exactly; next to a wall it holds the water or
+  shifts it along the wall only, as asked; its entries are checked.
 \*---------------------------------------------------------------------------*/
 
 #include <catch2/catch.hpp>
@@ -249,6 +250,133 @@ TEST_CASE("fickian shifting carries a linear velocity field exactly")
 }
 
 
+// Whether fluid particle i has a wall or dummy particle within re
+bool nextToWall(const tank& t, const label i)
+{
+    for (label j = t.N*t.N; j < t.cloud.size(); ++j)
+    {
+        if (mag(t.cloud.x()[j] - t.cloud.x()[i]) < re)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+TEST_CASE("fickian shifting with walls hold leaves the water next to a wall")
+{
+    // A disordered block: with walls hold the particles within re of the
+    // wall row or the dummies neither move nor change velocity; the
+    // others shift as with walls shift, which moves both
+    auto run = [](const std::string& walls, List<vector2D>& dr, List<vector2D>& dU)
+    {
+        tank t(12, 0.2);
+        forAll(t.cloud.U(), i)
+        {
+            t.cloud.U()[i] =
+            (
+                t.cloud.kind()[i] == particleKind::fluid
+              ? vector2D(0.5 + 30*t.cloud.x()[i].y(), 1) : vector2D(Zero)
+            );
+        }
+        const List<vector2D> x0(t.cloud.x()), U0(t.cloud.U());
+        List<bool> near(t.N*t.N);
+        forAll(near, i)
+        {
+            near[i] = nextToWall(t, i);
+        }
+        const neighbourList nbrs(t.cloud.x(), re);
+        fickian("walls " + walls + ";")->shift(t.cloud, nbrs, l0, re, 0.1*l0);
+        dr.setSize(near.size());
+        dU.setSize(near.size());
+        forAll(near, i)
+        {
+            dr[i] = t.cloud.x()[i] - x0[i];
+            dU[i] = t.cloud.U()[i] - U0[i];
+        }
+        return near;
+    };
+    List<vector2D> drHold, dUHold, drShift, dUShift;
+    const List<bool> near = run("hold", drHold, dUHold);
+    run("shift", drShift, dUShift);
+    scalar heldHold = 0, heldShift = 0, awayHold = 0;
+    label nNear = 0;
+    forAll(near, i)
+    {
+        if (near[i])
+        {
+            ++nNear;
+            heldHold = max(heldHold, mag(drHold[i]) + mag(dUHold[i]));
+            heldShift = max(heldShift, mag(drShift[i])/l0);
+        }
+        else
+        {
+            // Away from the walls the two are the same shift
+            CHECK(drHold[i] == drShift[i]);
+            awayHold = max(awayHold, mag(drHold[i])/l0);
+        }
+    }
+    INFO(nNear << " particles next to the wall; their largest shift "
+        << heldShift << " l0 with walls shift");
+    CHECK(nNear >= 12);             // the first row at least
+    CHECK(heldHold == 0);
+    CHECK(heldShift > 1e-3);        // not trivially still
+    CHECK(awayHold > 1e-3);
+}
+
+
+TEST_CASE("fickian shifting with walls tangential shifts along the wall only")
+{
+    // Disordered in y only, so that each particle's wall and dummy
+    // neighbours lie symmetrically about it and the wall's normal is y:
+    // next to the wall the shift is along x alone (exactly), where walls
+    // shift moves it along y as well
+    auto run = [](const std::string& walls)
+    {
+        tank t(12, 0);
+        Random rnd(7);
+        for (label i = 0; i < t.N*t.N; ++i)
+        {
+            t.cloud.x()[i].y() += 0.2*l0*(2*rnd.sample01<scalar>() - 1);
+        }
+        forAll(t.cloud.U(), i)
+        {
+            t.cloud.U()[i] = (t.cloud.kind()[i] == particleKind::fluid ? vector2D(0, 1) : vector2D(Zero));
+        }
+        const List<vector2D> x0(t.cloud.x());
+        List<bool> near(t.N*t.N);
+        forAll(near, i)
+        {
+            near[i] = nextToWall(t, i) && !t.cloud.surface()[i];
+        }
+        const neighbourList nbrs(t.cloud.x(), re);
+        fickian("walls " + walls + ";")->shift(t.cloud, nbrs, l0, re, 0.1*l0);
+        scalar normal = 0, along = 0;
+        label nNear = 0;
+        for (label i = 0; i < t.N*t.N; ++i)
+        {
+            if (near[i])
+            {
+                ++nNear;
+                normal = max(normal, mag(t.cloud.x()[i].y() - x0[i].y())/l0);
+                along = max(along, mag(t.cloud.x()[i].x() - x0[i].x())/l0);
+            }
+        }
+        CHECK(nNear >= 10);
+        return std::make_pair(normal, along);
+    };
+    const auto tangential = run("tangential");
+    const auto shifted = run("shift");
+    INFO("largest normal / tangential shift next to the wall [l0]: "
+        << tangential.first << " / " << tangential.second << " (tangential), "
+        << shifted.first << " / " << shifted.second << " (shift)");
+    CHECK(tangential.first < 1e-12);
+    CHECK(tangential.second > 1e-4);
+    CHECK(shifted.first > 1e-3);
+}
+
+
 TEST_CASE("shifting entries are checked")
 {
     CHECK(particleShifting::New(test::dict("rho 1;"))->type() == "none");
@@ -265,6 +393,11 @@ TEST_CASE("shifting entries are checked")
     CHECK_THROWS_WITH(fickian("surface none;"), Contains("tangential") && Contains("fixed"));
     CHECK_THROWS_WITH(fickian("surface { a 1; }"), Contains("surface") && Contains("not a dictionary"));
     CHECK_THROWS_WITH(fickian("coeficient 2;"), Contains("coefficient"));
+    CHECK_THROWS_WITH
+    (
+        fickian("walls slip;"),
+        Contains("shift") && Contains("tangential") && Contains("hold")
+    );
 }
 
 

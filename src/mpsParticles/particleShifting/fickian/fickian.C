@@ -48,6 +48,15 @@ Foam::particleShiftings::fickian::surfaceTypeNames
 });
 
 
+const Foam::Enum<Foam::particleShiftings::fickian::wallsType>
+Foam::particleShiftings::fickian::wallsTypeNames
+({
+    { wallsType::shift, "shift" },
+    { wallsType::tangential, "tangential" },
+    { wallsType::hold, "hold" },
+});
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 inline Foam::scalar Foam::particleShiftings::fickian::antiClumping
@@ -111,8 +120,8 @@ const Foam::dictionary& Foam::particleShiftings::fickian::checkEntries
     (
         dict,
         {
-            "type", "diffusion", "surface", "coefficient", "maxShift",
-            "tensileCorrection", "tensileExponent"
+            "type", "diffusion", "surface", "walls", "coefficient",
+            "maxShift", "tensileCorrection", "tensileExponent"
         },
         "shifting fickian"
     );
@@ -120,7 +129,7 @@ const Foam::dictionary& Foam::particleShiftings::fickian::checkEntries
     (
         dict,
         {
-            "diffusion", "surface", "coefficient", "maxShift",
+            "diffusion", "surface", "walls", "coefficient", "maxShift",
             "tensileCorrection", "tensileExponent"
         }
     );
@@ -148,6 +157,10 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
         (
             dict, "surface", surfaceTypeNames, surfaceType::fixed
         )
+    ),
+    walls_
+    (
+        inputChecks::choice(dict, "walls", wallsTypeNames, wallsType::shift)
     ),
     A_
     (
@@ -278,9 +291,10 @@ MPS_ALWAYS_INLINE void Foam::particleShiftings::fickian::shiftRow
     // (W' < 0): grad C points into the fluid, where the neighbours
     // are, and M = sum V grad_i W_ij d is symmetric positive definite
     // (the identity on a full, regular neighbourhood)
-    vector2D gradC(Zero), g(Zero);
+    vector2D gradC(Zero), g(Zero), gWall(Zero);
     tensor2D Mf(Zero), Mw(Zero), S(Zero);
     bool nearSurface = surface[i];
+    bool nearWall = false;
     for (label l = 0; l < m; ++l)
     {
         const label j = J[l];
@@ -297,7 +311,13 @@ MPS_ALWAYS_INLINE void Foam::particleShiftings::fickian::shiftRow
         else
         {
             Mw += gW*d;
+            gWall += gW;
+            nearWall = true;
         }
+    }
+    if (nearWall && walls_ == wallsType::hold)
+    {
+        return;
     }
     // (M over all neighbours: the fluid's part and the walls')
     const tensor2D M(Mf + Mw);
@@ -314,6 +334,16 @@ MPS_ALWAYS_INLINE void Foam::particleShiftings::fickian::shiftRow
         {
             nHat /= -magN;
             gradC -= (gradC & nHat)*nHat;
+        }
+    }
+    if (nearWall && walls_ == wallsType::tangential)
+    {
+        // The walls' share of g points into the wall, along its normal
+        const scalar magW = mag(gWall);
+        if (magW > VSMALL)
+        {
+            const vector2D nWall(gWall/magW);
+            gradC -= (gradC & nWall)*nWall;
         }
     }
 
@@ -422,7 +452,8 @@ Foam::scalar Foam::particleShiftings::fickian::shift
 void Foam::particleShiftings::fickian::info(Ostream& os) const
 {
     os  << type() << " (diffusion " << diffusionTypeNames[diffusion_]
-        << ", A " << A_ << ", maxShift " << maxShift_ << " l0)";
+        << ", A " << A_ << ", maxShift " << maxShift_ << " l0, walls "
+        << wallsTypeNames[walls_] << ")";
 }
 
 
