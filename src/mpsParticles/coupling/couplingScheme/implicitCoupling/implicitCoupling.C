@@ -40,6 +40,7 @@ Foam::couplingSchemes::implicitCoupling::implicitCoupling
     couplingScheme(dict, fluid, structure, interface),
     maxIterations_(dict.getOrDefault<label>("maxIterations", 50)),
     tolerance_(dict.getOrDefault<scalar>("tolerance", 1e-3)),
+    relaxation_(couplingRelaxation::New(dict)),
     lastIterations_(0),
     totalIterations_(0),
     nUnconverged_(0)
@@ -59,6 +60,9 @@ Foam::couplingSchemes::implicitCoupling::implicitCoupling
             << ") and 'tolerance' (above 0, got " << tolerance_ << ")"
             << exit(FatalIOError);
     }
+    Info<< "Coupling relaxation ";
+    relaxation_->info(Info);
+    Info<< endl;
 }
 
 
@@ -75,7 +79,7 @@ bool Foam::couplingSchemes::implicitCoupling::iterate
     boolList owned;
     const labelList index(interface_.attachedHere(owned));
     const label n = index.size();
-    List<vector2D> guess(n, Zero), x, U, r(n), rOld(n);
+    List<vector2D> guess(n, Zero), x, U, r(n);
     forAll(index, k)
     {
         if (owned[k])
@@ -91,7 +95,7 @@ bool Foam::couplingSchemes::implicitCoupling::iterate
     UList<vector2D>& cloudU = fluid_.cloud().U();
     UList<scalar>& p = fluid_.cloud().p();
     const scalarList pOld(p);
-    scalar omega = 0.5;
+    relaxation_->beginStep();
     lastIterations_ = 0;
     while (lastIterations_ < maxIterations_)
     {
@@ -127,28 +131,12 @@ bool Foam::couplingSchemes::implicitCoupling::iterate
         }
         if (r2 <= sqr(tolerance_)*max(U2, VSMALL))
         {
+            relaxation_->endStep();
             return true;
         }
-        if (lastIterations_ > 1)
-        {
-            scalar num = 0, den = 0;
-            forAll(r, k)
-            {
-                const vector2D dr(r[k] - rOld[k]);
-                num += rOld[k] & dr;
-                den += magSqr(dr);
-            }
-            if (den > 0)
-            {
-                omega = -omega*num/den;
-            }
-        }
-        forAll(guess, k)
-        {
-            guess[k] += omega*r[k];
-        }
-        rOld = r;
+        relaxation_->update(guess, r);
     }
+    relaxation_->endStep();
     return false;
 }
 
