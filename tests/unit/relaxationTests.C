@@ -3,8 +3,9 @@
   (couplingRelaxation). On a linear fixed point x = A x + b with m
   unknowns, where the plain iteration diverges, IQN-ILS (Degroote et al.
   2009) is exact after at most m + 1 iterations, and with its columns
-  reused the next step's is exact at once; Aitken's relaxation is exact in
-  two where A is a multiple of the identity; the entries are checked.
+  reused the next step's is exact at once; an iteration that changes
+  nothing restarts it; Aitken's relaxation is exact in two where A is a
+  multiple of the identity; the entries are checked.
 \*---------------------------------------------------------------------------*/
 
 #include <catch2/catch.hpp>
@@ -159,6 +160,28 @@ TEST_CASE("IQN-ILS with reuse solves the next step of the same problem at once")
 }
 
 
+TEST_CASE("IQN-ILS starts again from a relaxed step when an iteration changes nothing")
+{
+    // Where S is not smooth (a contact, a switch) the secant model can
+    // answer with the guess it was given: the same residual comes back,
+    // and the model, which learnt nothing, is dropped for a relaxed step
+    autoPtr<couplingRelaxation> iqn(relaxation("type IQN-ILS; initial 0.4;"));
+    List<vector2D> x(2, Zero);
+    const List<vector2D> r0({vector2D(1, 0), vector2D(0, 2)});
+    const List<vector2D> r1({vector2D(0.5, 0.1), vector2D(0.2, 1)});
+    iqn->beginStep();
+    iqn->update(x, r0);                     // x^1 = 0.4 r^0
+    CHECK(mag(x[1] - vector2D(0, 0.8)) < 1e-15);
+    iqn->update(x, r1);                     // a quasi-Newton step
+    const List<vector2D> x2(x);
+    iqn->update(x, r1);                     // nothing changed
+    forAll(x, k)
+    {
+        CHECK(mag(x[k] - (x2[k] + 0.4*r1[k])) < 1e-15);
+    }
+}
+
+
 TEST_CASE("Aitken's relaxation is exact in two iterations on x = a x + b")
 {
     // One factor for every unknown: the secant's omega is 1/(1 - a)
@@ -186,6 +209,7 @@ TEST_CASE("relaxation entries are checked")
     CHECK_THROWS_WITH(relaxation("type aitken; initial 0;"), Contains("initial"));
     CHECK_THROWS_WITH(relaxation("type IQN-ILS; resue 2;"), Contains("reuse"));
     CHECK_THROWS_WITH(relaxation("type aitken; reuse 2;"), Contains("reuse"));
+    CHECK_THROWS_WITH(relaxation("type IQN-ILS; filter 1;"), Contains("filter"));
 }
 
 

@@ -503,7 +503,9 @@ Foam::mpsFluid::mpsFluid
     shifting_(particleShifting::New(dict)),
     gradient_(pressureGradient::New(dict)),
     domain_(domain),
-    exchangeTime_(0)
+    exchangeTime_(0),
+    pStepStart_(),
+    pressureSolved_(false)
 {
     if (nu_ < 0)
     {
@@ -733,6 +735,7 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
     };
 
     ++info_.nSteps;
+    pressureSolved_ = false;
     redistribute();
     // The search's candidates at x^k: the viscosity sums over them, and
     // the collisions find their pairs, closer than l0 at x*, among them
@@ -783,6 +786,15 @@ bool Foam::mpsFluid::beginStep(const scalar dt)
 
 void Foam::mpsFluid::solveStepPressure(const scalar dt)
 {
+    if (pressureSolved_)
+    {
+        cloud_.p().deepCopy(pStepStart_);
+    }
+    else
+    {
+        pStepStart_ = cloud_.p();
+        pressureSolved_ = true;
+    }
     ppe_.solve(dt);
     const pressureSolver::performance& perf = ppe_.performance();
     info_.nUnknowns = ppe_.nSolved();

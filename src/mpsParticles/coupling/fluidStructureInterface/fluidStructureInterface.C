@@ -43,6 +43,40 @@ Foam::labelList Foam::fluidStructureInterface::attachedHere
 }
 
 
+Foam::List<Foam::vector2D>
+Foam::fluidStructureInterface::wallVelocities() const
+{
+    boolList owned;
+    const labelList index(attachedHere(owned));
+    List<vector2D> U(index.size(), Zero);
+    forAll(index, k)
+    {
+        if (owned[k])
+        {
+            U[k] = cloud_.U()[index[k]];
+        }
+    }
+    combineRanks(U, plusEqOp<vector2D>());
+    return U;
+}
+
+
+void Foam::fluidStructureInterface::setWallVelocities
+(
+    const UList<vector2D>& U
+)
+{
+    forAll(attachedId_, k)
+    {
+        const label i = cloud_.index(attachedId_[k]);
+        if (i >= 0)
+        {
+            cloud_.U()[i] = U[k];
+        }
+    }
+}
+
+
 void Foam::fluidStructureInterface::setInterface(const dictionary& dict)
 {
     const structureModel& model = structure_.model();

@@ -33,6 +33,7 @@ Foam::couplingRelaxations::IQNILS::IQNILS(const dictionary& dict)
 :
     couplingRelaxation(dict),
     reuse_(inputChecks::number<label>(dict, "reuse", 0, ">= 0")),
+    filter_(inputChecks::number<scalar>(dict, "filter", 1e-2, "[0, 1)")),
     current_(),
     history_(),
     rOld_(),
@@ -41,7 +42,7 @@ Foam::couplingRelaxations::IQNILS::IQNILS(const dictionary& dict)
 {
     inputChecks::keywords
     (
-        dict, {"type", "initial", "reuse"}, "relaxation IQN-ILS"
+        dict, {"type", "initial", "reuse", "filter"}, "relaxation IQN-ILS"
     );
 }
 
@@ -50,7 +51,8 @@ Foam::couplingRelaxations::IQNILS::IQNILS(const dictionary& dict)
 
 void Foam::couplingRelaxations::IQNILS::info(Ostream& os) const
 {
-    os  << type() << " (initial " << initial_ << ", reuse " << reuse_ << ")";
+    os  << type() << " (initial " << initial_ << ", reuse " << reuse_
+        << ", filter " << filter_ << ")";
 }
 
 
@@ -77,32 +79,70 @@ void Foam::couplingRelaxations::IQNILS::update
             xTilde(2*k + d) = x[k][d] + r[k][d];
         }
     }
+    bool restart = false;
     if (!first_)
     {
         current_.V.insert(current_.V.begin(), rk - rOld_);
         current_.W.insert(current_.W.begin(), xTilde - xTildeOld_);
+        // An iteration that changed the residual by less than filter of
+        // its size brought the model nothing new: the model's own answer
+        // would not move the guess (S is not smooth enough there for a
+        // secant model, e.g. a contact): the model starts again
+        restart = !(current_.V.front().norm() > filter_*rk.norm());
     }
     rOld_ = rk;
     xTildeOld_ = xTilde;
     first_ = false;
+    if (restart)
+    {
+        current_ = columns();
+        history_.clear();
+        forAll(x, k)
+        {
+            x[k] += initial_*r[k];
+        }
+        return;
+    }
 
     // This step's columns, then the earlier steps' that have as many
     // unknowns (the attached particles may change with the ranks'
-    // ownership), at most m
-    std::vector<const Eigen::VectorXd*> Vc, Wc;
-    auto take = [&](const columns& c)
+    // ownership), newest first, filtered (Haelterman et al.'s QR2): by
+    // modified Gram-Schmidt, a column whose part orthogonal to the newer
+    // ones is below filter times its norm is dropped for good (it would
+    // let the solver's noise into alpha)
+    std::vector<Eigen::VectorXd> Q;
+    std::vector<const Eigen::VectorXd*> Wc;
+    std::vector<Eigen::VectorXd> Vc;
+    auto take = [&](columns& c)
     {
-        for (size_t j = 0; j < c.V.size() && label(Vc.size()) < m; ++j)
+        for (size_t j = 0; j < c.V.size();)
         {
-            if (c.V[j].size() == m)
+            if (c.V[j].size() != m || label(Q.size()) >= m)
             {
-                Vc.push_back(&c.V[j]);
-                Wc.push_back(&c.W[j]);
+                ++j;
+                continue;
             }
+            Eigen::VectorXd v(c.V[j]);
+            const scalar norm0 = v.norm();
+            for (const Eigen::VectorXd& q : Q)
+            {
+                v -= q.dot(v)*q;
+            }
+            const scalar normV = v.norm();
+            if (!(normV > filter_*norm0))
+            {
+                c.V.erase(c.V.begin() + j);
+                c.W.erase(c.W.begin() + j);
+                continue;
+            }
+            Q.push_back(v/normV);
+            Vc.push_back(c.V[j]);
+            Wc.push_back(&c.W[j]);
+            ++j;
         }
     };
     take(current_);
-    for (const columns& c : history_)
+    for (columns& c : history_)
     {
         take(c);
     }
@@ -116,16 +156,15 @@ void Foam::couplingRelaxations::IQNILS::update
         return;
     }
 
+    // alpha = argmin |V alpha + r^k|, V = Q R with Q's columns above
     const label nc = Vc.size();
     Eigen::MatrixXd V(m, nc), W(m, nc);
     for (label j = 0; j < nc; ++j)
     {
-        V.col(j) = *Vc[j];
+        V.col(j) = Vc[j];
         W.col(j) = *Wc[j];
     }
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(V);
-    qr.setThreshold(1e-10);
-    const Eigen::VectorXd alpha(qr.solve(-rk));
+    const Eigen::VectorXd alpha(V.householderQr().solve(-rk));
     const Eigen::VectorXd next(xTilde + W*alpha);
     forAll(x, k)
     {

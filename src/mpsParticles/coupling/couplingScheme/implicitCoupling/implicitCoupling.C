@@ -75,42 +75,16 @@ bool Foam::couplingSchemes::implicitCoupling::iterate
 )
 {
     // The walls' velocities enter the pressure through the divergence.
-    // Every rank holds the whole guess: each particle's from its owner
-    boolList owned;
-    const labelList index(interface_.attachedHere(owned));
-    const label n = index.size();
-    List<vector2D> guess(n, Zero), x, U, r(n);
-    forAll(index, k)
-    {
-        if (owned[k])
-        {
-            guess[k] = fluid_.cloud().U()[index[k]];
-        }
-    }
-    combineRanks(guess, plusEqOp<vector2D>());
+    // Every rank holds the whole guess
+    List<vector2D> guess(interface_.wallVelocities()), x, U;
+    List<vector2D> r(guess.size());
     structure_.saveState();
-
-    // Every iteration solves from the step's old pressure (the rate form
-    // of the compressibility reads it)
-    UList<vector2D>& cloudU = fluid_.cloud().U();
-    UList<scalar>& p = fluid_.cloud().p();
-    const scalarList pOld(p);
     relaxation_->beginStep();
     lastIterations_ = 0;
     while (lastIterations_ < maxIterations_)
     {
         ++lastIterations_;
-        forAll(index, k)
-        {
-            if (index[k] >= 0)
-            {
-                cloudU[index[k]] = guess[k];
-            }
-        }
-        if (lastIterations_ > 1)
-        {
-            p.deepCopy(pOld);
-        }
+        interface_.setWallVelocities(guess);
         fluid_.solveStepPressure(deltaT);
         interface_.transferPressure(fluid_);
         if (lastIterations_ > 1)
