@@ -119,7 +119,8 @@ scalar numberDensitySpread(const tank& t)
 
 TEST_CASE("fickian shifting leaves a regular lattice where it is")
 {
-    // On the lattice grad C vanishes by symmetry inside and along the wall;
+    // On the lattice grad C vanishes by symmetry inside and along the wall
+    // (walls shift: the rows next to it shifted as the others);
     // along the flat top it is normal to the surface and is removed. Only
     // the block's corners and side columns may move.
     tank t(12, 0);
@@ -130,7 +131,7 @@ TEST_CASE("fickian shifting leaves a regular lattice where it is")
     const List<vector2D> x0(t.cloud.x());
     const List<vector2D> U0(t.cloud.U());
     const neighbourList nbrs(t.cloud.x(), re);
-    fickian("diffusion fixed; surface tangential;")->shift(t.cloud, nbrs, l0, re, 1e-3);
+    fickian("diffusion fixed; surface tangential; walls shift;")->shift(t.cloud, nbrs, l0, re, 1e-3);
 
     scalar inside = 0, sides = 0;
     for (label i = 0; i < t.N*t.N; ++i)

@@ -160,7 +160,7 @@ Foam::particleShiftings::fickian::fickian(const dictionary& dict)
     ),
     walls_
     (
-        inputChecks::choice(dict, "walls", wallsTypeNames, wallsType::shift)
+        inputChecks::choice(dict, "walls", wallsTypeNames, wallsType::tangential)
     ),
     A_
     (
