@@ -110,9 +110,10 @@ void Foam::couplingRelaxations::IQNILS::update
     // modified Gram-Schmidt, a column whose part orthogonal to the newer
     // ones is below filter times its norm is dropped for good (it would
     // let the solver's noise into alpha)
+    // (pointers to the kept columns stay valid: a column is erased only
+    // after every column kept before it)
     std::vector<Eigen::VectorXd> Q;
-    std::vector<const Eigen::VectorXd*> Wc;
-    std::vector<Eigen::VectorXd> Vc;
+    std::vector<const Eigen::VectorXd*> Vc, Wc;
     auto take = [&](columns& c)
     {
         for (size_t j = 0; j < c.V.size();)
@@ -136,7 +137,7 @@ void Foam::couplingRelaxations::IQNILS::update
                 continue;
             }
             Q.push_back(v/normV);
-            Vc.push_back(c.V[j]);
+            Vc.push_back(&c.V[j]);
             Wc.push_back(&c.W[j]);
             ++j;
         }
@@ -156,12 +157,13 @@ void Foam::couplingRelaxations::IQNILS::update
         return;
     }
 
-    // alpha = argmin |V alpha + r^k|, V = Q R with Q's columns above
+    // alpha = argmin |V alpha + r^k| over the kept columns (a Householder
+    // QR of the few of them)
     const label nc = Vc.size();
     Eigen::MatrixXd V(m, nc), W(m, nc);
     for (label j = 0; j < nc; ++j)
     {
-        V.col(j) = Vc[j];
+        V.col(j) = *Vc[j];
         W.col(j) = *Wc[j];
     }
     const Eigen::VectorXd alpha(V.householderQr().solve(-rk));

@@ -13,7 +13,6 @@ License
 
 #include "implicitCoupling.H"
 #include "addToRunTimeSelectionTable.H"
-#include "allRanks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -80,8 +79,9 @@ bool Foam::couplingSchemes::implicitCoupling::iterate
     List<vector2D> r(guess.size());
     structure_.saveState();
     relaxation_->beginStep();
+    bool converged = false;
     lastIterations_ = 0;
-    while (lastIterations_ < maxIterations_)
+    while (!converged && lastIterations_ < maxIterations_)
     {
         ++lastIterations_;
         interface_.setWallVelocities(guess);
@@ -103,15 +103,14 @@ bool Foam::couplingSchemes::implicitCoupling::iterate
             r2 += magSqr(r[k]);
             U2 += magSqr(U[k]);
         }
-        if (r2 <= sqr(tolerance_)*max(U2, VSMALL))
+        converged = r2 <= sqr(tolerance_)*max(U2, VSMALL);
+        if (!converged)
         {
-            relaxation_->endStep();
-            return true;
+            relaxation_->update(guess, r);
         }
-        relaxation_->update(guess, r);
     }
     relaxation_->endStep();
-    return false;
+    return converged;
 }
 
 
